@@ -1,0 +1,67 @@
+#include "io/csv_reader.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.hpp"
+
+namespace demscale::io {
+
+namespace {
+std::vector<std::string> split_fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char ch = line[i];
+        if (quoted) {
+            if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
+            else if (ch == '"') quoted = false;
+            else out.back() += ch;
+        } else if (ch == '"') {
+            quoted = true;
+        } else if (ch == ',') {
+            out.emplace_back();
+        } else if (ch != '\r') {
+            out.back() += ch;
+        }
+    }
+    return out;
+}
+}  // namespace
+
+CsvData parse_csv(const std::string& text, const std::string& source) {
+    CsvData d;
+    std::istringstream in(text);
+    std::string line;
+    int n = 0;
+    while (std::getline(in, line)) {
+        ++n;
+        if (line.empty()) continue;
+        if (line[0] == '#') {
+            d.comments.push_back(line.size() > 2 ? line.substr(2) : "");
+            continue;
+        }
+        auto fields = split_fields(line);
+        if (d.header.empty()) {
+            d.header = std::move(fields);
+            continue;
+        }
+        if (fields.size() != d.header.size())
+            throw InputError(source + ":" + std::to_string(n), std::to_string(fields.size()) + " fields",
+                             std::to_string(d.header.size()) + " fields, as in the header");
+        d.rows.push_back(std::move(fields));
+        d.row_lines.push_back(n);
+    }
+    if (d.header.empty()) throw InputError(source, "(no header row)", "a CSV file with a header row");
+    return d;
+}
+
+CsvData read_csv_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError("reference", path, "a readable CSV file (not found or unreadable)");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return parse_csv(s.str(), path);
+}
+
+}  // namespace demscale::io

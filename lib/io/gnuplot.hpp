@@ -1,0 +1,16 @@
+// Renders a gnuplot script to PNG (pngcairo). The script reads `outfile` if set, so we can
+// point it at a temporary file and rename only a complete image over the target.
+#pragma once
+
+#include <filesystem>
+
+namespace demscale::io {
+
+// True when a gnuplot executable is on PATH.
+bool gnuplot_available();
+
+// Runs `gnuplot` in the script's directory with outfile = a temporary beside png_target,
+// then renames it over png_target. Throws std::runtime_error (with gnuplot's exit status) on failure.
+void render_gnuplot(const std::filesystem::path& script, const std::filesystem::path& png_target);
+
+}  // namespace demscale::io
