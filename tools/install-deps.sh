@@ -8,6 +8,7 @@ packages=(
   libgsl-dev libeigen3-dev  # numerics (GSL: ODE + root finding; Eigen: basis solve)
   catch2                    # tests (v2 on Debian 12)
   gnuplot-nox               # plots (pngcairo terminal)
+  fonts-dejavu-core         # a font for pngcairo on a bare machine
   libtomlplusplus-dev       # input files (TOML)
   nlohmann-json3-dev        # --format json
   libcli11-dev              # command-line subcommands

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# End-to-end checks of the demscale command line: exit codes, messages, and that a failing
+# command leaves no output file behind. Usage: cli_test.sh CASE DEMSCALE SOURCE_DIR
+set -u
+case_name=$1 demscale=$2 src=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
+# expect CODE PATTERN -- command...: exit code CODE and PATTERN (grep -E) in stdout+stderr.
+expect() {
+  local code=$1 pattern=$2; shift 3
+  "$@" >"$work/out" 2>&1; local rc=$?
+  [ "$rc" -eq "$code" ] || { cat "$work/out" >&2; fail "exit $rc, expected $code: $*"; }
+  grep -Eq -- "$pattern" "$work/out" || { cat "$work/out" >&2; fail "output lacks /$pattern/: $*"; }
+}
+bad_config() { printf '%s\n' "$@" >"$work/bad.toml"; }
+
+case $case_name in
+  regress_passes)
+    expect 0 '^ok .*fig3.csv' -- "$demscale" regress
+    grep -q '^ok .*fig4.csv' "$work/out" || fail "fig4 not compared" ;;
+  regress_fails_on_perturbed_reference)
+    cp "$src"/data/reference/fig*.csv "$work/"
+    # Perturb one stress value of fig4 by 1e-6 relative (row 50 of the data).
+    awk -F, -v OFS=, '/^#/ || !h {if(!/^#/) h=1; print; next} {n++; if(n==50) $9=$9*(1+1e-6); print}' \
+      "$src/data/reference/fig4.csv" >"$work/fig4.csv"
+    expect 1 'FAIL .*fig4.csv: 1 of' -- "$demscale" regress --reference-dir "$work"
+    grep -q 'sigma_pa' "$work/out" || fail "report does not name the drifting column"
+    grep -q '^ok .*fig3.csv' "$work/out" || fail "unperturbed fig3 should pass" ;;
+  regress_missing_reference)
+    expect 2 'reference = .*fig3.csv.*regress --update' -- "$demscale" regress --reference-dir "$work/none" ;;
+  regress_ill_formed_reference)
+    cp "$src"/data/reference/fig3.csv "$work/"
+    printf '# nothing\n' >"$work/fig4.csv"
+    expect 2 'fig4.csv.*header' -- "$demscale" regress --reference-dir "$work" ;;
+  regress_update_writes_references)
+    expect 0 'updated .*fig3.csv: new' -- "$demscale" regress --update --reference-dir "$work/ref"
+    expect 0 '^ok' -- "$demscale" regress --reference-dir "$work/ref" ;;
+  table_csv_interface)
+    expect 0 '^radius_mm,sf,mass_g,' -- "$demscale" table --format csv --exponent 1,3
+    for col in v_mm3 vhat fc_contact_n hhat_rupture gamma_n_per_m_k1 fc_contact_n_k3 sigma_contact_pa_k1; do
+      grep -q "$col" "$work/out" || fail "missing column $col"
+    done
+    grep -q '^# bridge_variant: mikami1998' "$work/out" || fail "no variant metadata" ;;
+  table_json_and_markdown)
+    expect 0 '"sigma_contact_pa_k1"' -- "$demscale" table --format json
+    expect 0 '^\| radius_mm \|' -- "$demscale" table --format markdown ;;
+  bad_radius_exit_2)
+    bad_config '[particle]' 'radii_mm = [1.0, -2.0]' 'masses_g = [0.01, 0.07]'
+    expect 2 'bad.toml:2: particle.radii_mm\[1\] = -2: accepted a finite number > 0' -- \
+      "$demscale" curves --figure 3 --config "$work/bad.toml" --out "$work/out_dir"
+    [ ! -e "$work/out_dir" ] || fail "a failed run created output" ;;
+  bad_theta_exit_2)
+    bad_config '[particle]' 'radii_mm = [1.0]' 'masses_g = [0.01]' '[liquid]' 'contact_angle_deg = 95'
+    expect 2 'contact_angle_deg = 95: accepted \[0, 90\) degrees' -- "$demscale" table --config "$work/bad.toml" ;;
+  bad_moisture_exit_2)
+    bad_config '[particle]' 'radii_mm = [1.0]' 'masses_g = [0.01]' '[liquid]' 'moisture_content = -0.1'
+    expect 2 'moisture_content = -0.1: accepted \(0, 1\)' -- "$demscale" table --config "$work/bad.toml" ;;
+  unknown_key_exit_2)
+    bad_config '[particle]' 'radii_mm = [1.0]' 'masses_g = [0.01]' 'radius_mm = 2'
+    expect 2 'unknown key.*did you mean particle.radii_mm' -- "$demscale" table --config "$work/bad.toml" ;;
+  malformed_file_exit_2)
+    bad_config '[particle' 'radii_mm = 1'
+    expect 2 'TOML' -- "$demscale" table --config "$work/bad.toml" ;;
+  missing_file_exit_2)
+    expect 2 'not found' -- "$demscale" table --config "$work/nope.toml" ;;
+  bad_exponent_exit_2)
+    expect 2 '--exponent = "abc"' -- "$demscale" table --exponent 1,abc
+    expect 2 '--exponent = "nan"' -- "$demscale" table --exponent nan ;;
+  bad_figure_exit_2)
+    expect 2 'figure' -- "$demscale" curves --figure 5 --out "$work/o"
+    [ ! -e "$work/o" ] || fail "output created" ;;
+  curves_write_png)
+    expect 0 'curves collapse' -- "$demscale" curves --figure 4 --out "$work/plots"
+    for f in fig4.csv fig4.gp fig4.png; do [ -s "$work/plots/$f" ] || fail "$f missing"; done
+    head -c 8 "$work/plots/fig4.png" | od -An -c | grep -q 'P   N   G' || fail "fig4.png is not a PNG"
+    ls -a "$work/plots" | grep -q '\.tmp' && fail "temporary file left behind"
+    true ;;
+  scaling_keep_gravity)
+    expect 0 'gravity .* 1 +1 +scaled' -- "$demscale" scaling --length 4 --keep gravity,density
+    grep -Eq 'time_step .* 2 +2 ' "$work/out" || fail "S_T should be 2 for S_L = 4 with g kept"
+    expect 0 'BROKEN' -- "$demscale" scaling --length 4 --density 1 --time 4 --hold gravity ;;
+  *) fail "unknown case" ;;
+esac
+echo "ok [$case_name]"
