@@ -34,6 +34,10 @@ case $case_name in
     cp "$src"/data/reference/fig3.csv "$work/"
     printf '# nothing\n' >"$work/fig4.csv"
     expect 2 'fig4.csv.*header' -- "$demscale" regress --reference-dir "$work" ;;
+  regress_unknown_column)
+    cp "$src"/data/reference/fig3.csv "$work/"
+    sed 's/^variant,radius_mm/variant,radius_cm/' "$src/data/reference/fig4.csv" >"$work/fig4.csv"
+    expect 2 'fig4.csv.*radius_cm' -- "$demscale" regress --reference-dir "$work" ;;
   regress_update_writes_references)
     expect 0 'updated .*fig3.csv: new' -- "$demscale" regress --update --reference-dir "$work/ref"
     expect 0 '^ok' -- "$demscale" regress --reference-dir "$work/ref" ;;
