@@ -1,0 +1,129 @@
+#include "bridge/bridge_model.hpp"
+
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "bridge/bridge_table.hpp"
+#include "bridge/closed_forms.hpp"
+#include "bridge/mikami.hpp"
+#include "bridge/young_laplace.hpp"
+#include "core/input_error.hpp"
+#include "core/nearest_name.hpp"
+
+namespace demscale::bridge {
+
+namespace {
+
+constexpr std::array<std::string_view, 7> names{"exact", "mikami1998", "yun-park-2017", "willett", "willett-simple",
+                                                "toroidal", "table"};
+
+// Remembers what a model prepared for the last (V̂, θ): one DEM pair type pays setup once.
+template <class Prepared>
+class PerPairCache {
+public:
+    template <class Make>
+    const Prepared& get(double vhat, ContactAngle theta, Make&& make) const {
+        if (!value_ || vhat != vhat_ || theta.radians() != theta_) {
+            value_.emplace(make());
+            vhat_ = vhat;
+            theta_ = theta.radians();
+        }
+        return *value_;
+    }
+
+private:
+    mutable std::optional<Prepared> value_;
+    mutable double vhat_ = 0, theta_ = 0;
+};
+
+class MikamiModel final : public BridgeModel {
+public:
+    explicit MikamiModel(MikamiVariant v) : options_{v, RuptureLaw::mikami1998} {}
+    std::string_view name() const override { return to_string(options_.variant); }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return coefficients(vhat, theta).hhat_rupture; }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override {
+        const auto& k = coefficients(vhat, theta);
+        return f_over_2pi_r_gamma(k, mikami_fhat(k, hhat));
+    }
+
+private:
+    const MikamiCoefficients& coefficients(double vhat, ContactAngle theta) const {
+        return cache_.get(vhat, theta, [&] { return mikami_coefficients(vhat, theta, options_); });
+    }
+    MikamiOptions options_;
+    PerPairCache<MikamiCoefficients> cache_;
+};
+
+class ExactModel final : public BridgeModel {
+public:
+    std::string_view name() const override { return "exact"; }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return family(vhat, theta).hhat_rupture(); }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override {
+        const auto r = family(vhat, theta).solve(std::max(hhat, 0.0));
+        if (r.status == YoungLaplaceStatus::above_rupture) return 0.0;
+        if (!r.ok()) throw std::runtime_error("exact bridge: " + r.message);
+        return r.shape.fhat_neck;
+    }
+
+private:
+    const YoungLaplaceBridge& family(double vhat, ContactAngle theta) const {
+        return cache_.get(vhat, theta, [&] { return YoungLaplaceBridge(vhat, theta); });
+    }
+    PerPairCache<YoungLaplaceBridge> cache_;
+};
+
+class WillettModel final : public BridgeModel {
+public:
+    explicit WillettModel(bool full) : full_(full) {}
+    std::string_view name() const override { return full_ ? "willett" : "willett-simple"; }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return willett_rupture_hhat(vhat, theta); }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override {
+        if (hhat > willett_rupture_hhat(vhat, theta)) return 0.0;
+        return full_ ? willett_full_fhat(vhat, theta, hhat) : willett_simple_fhat(vhat, theta, hhat);
+    }
+
+private:
+    bool full_;
+};
+
+class ToroidalModel final : public BridgeModel {
+public:
+    std::string_view name() const override { return "toroidal"; }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return rupture_hhat(vhat, theta, RuptureLaw::lian1993); }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override {
+        if (hhat > hhat_rupture(vhat, theta)) return 0.0;
+        return toroidal_bridge(vhat, theta, hhat).fhat;
+    }
+};
+
+class TableModel final : public BridgeModel {
+public:
+    explicit TableModel(BridgeTable t) : table_(std::move(t)) {}
+    std::string_view name() const override { return "table"; }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return table_.hhat_rupture(vhat, theta); }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override { return table_.fhat(vhat, theta, hhat); }
+
+private:
+    BridgeTable table_;
+};
+
+}  // namespace
+
+std::span<const std::string_view> bridge_model_names() { return names; }
+
+std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const std::string& table_path) {
+    if (name == "exact") return std::make_unique<ExactModel>();
+    if (name == "mikami1998") return std::make_unique<MikamiModel>(MikamiVariant::mikami1998);
+    if (name == "yun-park-2017") return std::make_unique<MikamiModel>(MikamiVariant::yun_park_2017);
+    if (name == "willett") return std::make_unique<WillettModel>(true);
+    if (name == "willett-simple") return std::make_unique<WillettModel>(false);
+    if (name == "toroidal") return std::make_unique<ToroidalModel>();
+    if (name == "table") return std::make_unique<TableModel>(BridgeTable::load(table_path));
+    std::string all;
+    for (auto n : names) all += (all.empty() ? "" : ", ") + std::string(n);
+    throw InputError("--model", "\"" + std::string(name) + "\"",
+                     "one of " + all + " (did you mean " + std::string(nearest_name(name, names)) + "?)");
+}
+
+}  // namespace demscale::bridge

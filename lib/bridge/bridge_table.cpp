@@ -1,0 +1,182 @@
+#include "bridge/bridge_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "bridge/young_laplace.hpp"
+#include "core/input_error.hpp"
+#include "io/csv_reader.hpp"
+
+namespace demscale::bridge {
+
+namespace {
+
+double gap_fraction(double t) { return 1.0 - (1.0 - t) * (1.0 - t); }  // ĥ/ĥ_c at grid coordinate t
+
+// Catmull–Rom through p[0..3] at nodes −1, 0, 1, 2, evaluated at f ∈ [0, 1].
+double catmull_rom(const double p[4], double f) {
+    return p[1] + 0.5 * f * (p[2] - p[0] + f * (2 * p[0] - 5 * p[1] + 4 * p[2] - p[3] + f * (3 * (p[1] - p[2]) + p[3] - p[0])));
+}
+
+// Four nodes around s ∈ [0, n−1] and the fraction; outside nodes extrapolated linearly by the caller.
+void stencil(double s, int n, int& i0, double& f) {
+    i0 = std::clamp(static_cast<int>(std::floor(s)), 0, n - 2);
+    f = s - i0;
+}
+
+template <class Get>
+double cubic_1d(Get get, int n, int i0, double f) {
+    double p[4];
+    for (int k = -1; k <= 2; ++k) {
+        const int i = i0 + k;
+        p[k + 1] = i < 0 ? 2 * get(0) - get(1) : i >= n ? 2 * get(n - 1) - get(n - 2) : get(i);
+    }
+    return catmull_rom(p, f);
+}
+
+}  // namespace
+
+double BridgeTable::at(int iv, int it, int ix) const {
+    return fhat_[(static_cast<std::size_t>(iv) * grid_.theta_points + it) * grid_.gap_points + ix];
+}
+
+BridgeTable BridgeTable::generate(const BridgeTableGrid& g, const std::function<void(int, int)>& progress) {
+    BridgeTable table;
+    table.grid_ = g;
+    table.fhat_.resize(static_cast<std::size_t>(g.vhat_points) * g.theta_points * g.gap_points);
+    table.ln_hc_.resize(static_cast<std::size_t>(g.vhat_points) * g.theta_points);
+    const int total = g.vhat_points * g.theta_points;
+    for (int iv = 0; iv < g.vhat_points; ++iv) {
+        const double vhat = std::exp(std::log(g.vhat_min) + (std::log(g.vhat_max) - std::log(g.vhat_min)) * iv / (g.vhat_points - 1));
+        for (int it = 0; it < g.theta_points; ++it) {
+            const ContactAngle theta{Degrees{g.theta_max_deg * it / (g.theta_points - 1)}};
+            const YoungLaplaceBridge bridge(vhat, theta);
+            if (!bridge.family_ok()) throw std::runtime_error(bridge.family_message());
+            table.ln_hc_[iv * g.theta_points + it] = std::log(bridge.hhat_rupture());
+            for (int ix = 0; ix < g.gap_points; ++ix) {
+                const double x = gap_fraction(double(ix) / (g.gap_points - 1));
+                const auto r = bridge.solve(x * bridge.hhat_rupture());
+                if (!r.ok())
+                    throw std::runtime_error("table node V^ = " + format_number(vhat) + ", theta = " +
+                                             format_number(theta.degrees()) + " deg, h^/h^_c = " + format_number(x) +
+                                             ": " + r.message);
+                table.fhat_[(static_cast<std::size_t>(iv) * g.theta_points + it) * g.gap_points + ix] = r.shape.fhat_neck;
+            }
+            if (progress) progress(iv * g.theta_points + it + 1, total);
+        }
+    }
+    return table;
+}
+
+std::string BridgeTable::to_csv() const {
+    std::ostringstream out;
+    out << "# demscale tabulated Young-Laplace bridge between equal spheres (generate: demscale bridge-table)\n"
+        << "# fhat = F/(2 pi R gamma); hhat = full gap / R; x = hhat/hhat_rupture = 1 - (1 - t)^2, t uniform\n"
+        << "# grid: vhat_min=" << format_number(grid_.vhat_min) << " vhat_max=" << format_number(grid_.vhat_max)
+        << " vhat_points=" << grid_.vhat_points << " theta_max_deg=" << format_number(grid_.theta_max_deg)
+        << " theta_points=" << grid_.theta_points << " gap_points=" << grid_.gap_points << "\n"
+        << "vhat,theta_deg,x,hhat_rupture,fhat\n";
+    const auto& g = grid_;
+    for (int iv = 0; iv < g.vhat_points; ++iv)
+        for (int it = 0; it < g.theta_points; ++it)
+            for (int ix = 0; ix < g.gap_points; ++ix)
+                out << format_number(std::exp(std::log(g.vhat_min) + (std::log(g.vhat_max) - std::log(g.vhat_min)) * iv /
+                                                                          (g.vhat_points - 1)))
+                    << "," << format_number(g.theta_max_deg * it / (g.theta_points - 1)) << ","
+                    << format_number(gap_fraction(double(ix) / (g.gap_points - 1))) << ","
+                    << format_number(std::exp(ln_hc_[iv * g.theta_points + it])) << "," << format_number(at(iv, it, ix))
+                    << "\n";
+    return out.str();
+}
+
+BridgeTable BridgeTable::load(const std::string& path) {
+    const io::CsvData csv = io::read_csv_file(path);
+    BridgeTable t;
+    auto& g = t.grid_;
+    bool have_grid = false;
+    for (const auto& line : csv.comments) {
+        if (line.rfind("grid:", 0) != 0) continue;
+        std::istringstream in(line.substr(5));
+        std::string item;
+        while (in >> item) {
+            const auto eq = item.find('=');
+            const std::string key = item.substr(0, eq);
+            const double value = std::strtod(item.substr(eq + 1).c_str(), nullptr);
+            if (key == "vhat_min") g.vhat_min = value;
+            else if (key == "vhat_max") g.vhat_max = value;
+            else if (key == "vhat_points") g.vhat_points = static_cast<int>(value);
+            else if (key == "theta_max_deg") g.theta_max_deg = value;
+            else if (key == "theta_points") g.theta_points = static_cast<int>(value);
+            else if (key == "gap_points") g.gap_points = static_cast<int>(value);
+        }
+        have_grid = true;
+    }
+    const std::size_t expected = static_cast<std::size_t>(g.vhat_points) * g.theta_points * g.gap_points;
+    if (!have_grid || g.vhat_points < 2 || g.theta_points < 2 || g.gap_points < 2 || !(g.vhat_min > 0) ||
+        !(g.vhat_max > g.vhat_min))
+        throw InputError(path, "(grid line)", "a '# grid: ...' line as written by demscale bridge-table");
+    if (csv.header != std::vector<std::string>{"vhat", "theta_deg", "x", "hhat_rupture", "fhat"} || csv.rows.size() != expected)
+        throw InputError(path, std::to_string(csv.rows.size()) + " rows",
+                         std::to_string(expected) + " rows of vhat,theta_deg,x,hhat_rupture,fhat");
+    t.fhat_.resize(expected);
+    t.ln_hc_.resize(static_cast<std::size_t>(g.vhat_points) * g.theta_points);
+    for (std::size_t i = 0; i < expected; ++i) {
+        const double hc = std::strtod(csv.rows[i][3].c_str(), nullptr), f = std::strtod(csv.rows[i][4].c_str(), nullptr);
+        if (!(std::isfinite(f) && f >= 0 && std::isfinite(hc) && hc > 0))
+            throw InputError(path + ":" + std::to_string(csv.row_lines[i]), csv.rows[i][4], "finite fhat >= 0 and hhat_rupture > 0");
+        t.fhat_[i] = f;
+        t.ln_hc_[i / g.gap_points] = std::log(hc);
+    }
+    return t;
+}
+
+bool BridgeTable::covers(double vhat, ContactAngle theta) const {
+    return vhat >= grid_.vhat_min * (1 - 1e-12) && vhat <= grid_.vhat_max * (1 + 1e-12) &&
+           theta.degrees() <= grid_.theta_max_deg + 1e-12;
+}
+
+void BridgeTable::locate(double vhat, ContactAngle theta, double& sv, double& st) const {
+    require_positive(vhat, "vhat");
+    if (!covers(vhat, theta))
+        throw InputError("vhat, theta", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg",
+                         "the table's range V^ in [" + format_number(grid_.vhat_min) + ", " + format_number(grid_.vhat_max) +
+                             "], theta <= " + format_number(grid_.theta_max_deg) + " deg (use --model exact outside it)");
+    sv = std::clamp((std::log(vhat) - std::log(grid_.vhat_min)) / (std::log(grid_.vhat_max) - std::log(grid_.vhat_min)) *
+                        (grid_.vhat_points - 1), 0.0, double(grid_.vhat_points - 1));
+    st = std::clamp(theta.degrees() / grid_.theta_max_deg * (grid_.theta_points - 1), 0.0, double(grid_.theta_points - 1));
+}
+
+double BridgeTable::hhat_rupture(double vhat, ContactAngle theta) const {
+    double sv, st;
+    locate(vhat, theta, sv, st);
+    int iv, it;
+    double fv, ft;
+    stencil(sv, grid_.vhat_points, iv, fv);
+    stencil(st, grid_.theta_points, it, ft);
+    auto along_theta = [&](int v) {
+        return cubic_1d([&](int k) { return ln_hc_[v * grid_.theta_points + k]; }, grid_.theta_points, it, ft);
+    };
+    return std::exp(cubic_1d(along_theta, grid_.vhat_points, iv, fv));
+}
+
+double BridgeTable::fhat(double vhat, ContactAngle theta, double hhat) const {
+    const double hc = hhat_rupture(vhat, theta);
+    const double x = std::max(hhat, 0.0) / hc;
+    if (x > 1.0) return 0.0;
+    double sv, st;
+    locate(vhat, theta, sv, st);
+    const double sx = (1.0 - std::sqrt(1.0 - x)) * (grid_.gap_points - 1);
+    int iv, it, ix;
+    double fv, ft, fx;
+    stencil(sv, grid_.vhat_points, iv, fv);
+    stencil(st, grid_.theta_points, it, ft);
+    stencil(sx, grid_.gap_points, ix, fx);
+    auto along_gap = [&](int v, int th) { return cubic_1d([&](int k) { return at(v, th, k); }, grid_.gap_points, ix, fx); };
+    auto along_theta = [&](int v) { return cubic_1d([&](int th) { return along_gap(v, th); }, grid_.theta_points, it, ft); };
+    return std::max(cubic_1d(along_theta, grid_.vhat_points, iv, fv), 0.0);
+}
+
+}  // namespace demscale::bridge

@@ -1,0 +1,94 @@
+// Exact pendular liquid bridge between two equal spheres: the Young–Laplace equation for an
+// axisymmetric meniscus without gravity, solved numerically (Lian, Thornton & Adams 1993;
+// Willett et al. 2000 solve the same problem). Lengths in units of the sphere radius R.
+//
+// Meridian r(s), z(s), tangent angle φ to the axis, arc length s, from the neck (z = 0):
+//   dr/ds = sin φ,  dz/ds = cos φ,  dφ/ds = cos φ / r − κ,   κ = Δp·R/γ (mean curvature ×2).
+// Boundary conditions: φ = 0 at the neck; at the contact line r = sin β, z = 1 + d − cos β
+// (β filling angle, d = ĥ/2 half gap) with φ = π/2 − β − θ. First integral (axial force):
+//   F/(2πRγ) = r cos φ − κ r²/2 = const  (neck: r₀ − κr₀²/2; contact line: sin β sin(β+θ) − κ sin²β/2).
+// Method: for a neck radius r₀ and β, κ follows from the first integral; the ODE is integrated with
+// GSL odeiv2 (rk8pd, adaptive) to r = sin β, giving d(β, r₀) and V(β, r₀). For fixed V̂ the
+// solutions form a family in r₀; rupture is its largest d (a fold), found with GSL's Brent
+// minimiser; the stable bridge at a given gap is the root of d(r₀) = ĥ/2 on the wide-neck branch.
+// Scope: concave necks (r₀ < sin β, β + θ < π/2), the pendular bridges of wet granular DEM.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/contact_angle.hpp"
+
+namespace demscale::bridge {
+
+struct YoungLaplaceTolerance {
+    double ode = 1e-12;    // GSL odeiv2 absolute and relative error per step
+    double root = 1e-12;   // root finding on β and r₀ (relative)
+};
+
+// One bridge shape in units of R.
+struct BridgeShape {
+    double neck_radius = 0;     // r₀
+    double filling_angle = 0;   // β, rad
+    double curvature = 0;       // κ = ΔpR/γ (negative: suction)
+    double half_gap = 0;        // d = ĥ/2
+    double volume = 0;          // V̂ = V/R³
+    double fhat_neck = 0;       // F/(2πRγ) from the neck ("gorge" method)
+    double fhat_contact = 0;    // F/(2πRγ) at the contact line, with the integrated angle
+    double contact_angle_error = 0;  // |φ_end − (π/2 − β − θ)|, rad: a check of the integration
+};
+
+enum class YoungLaplaceStatus { ok, above_rupture, not_converged, outside_scope };
+
+struct YoungLaplaceResult {
+    YoungLaplaceStatus status = YoungLaplaceStatus::not_converged;
+    std::string message;          // why, when not ok
+    BridgeShape shape;            // valid when ok
+    double hhat_rupture = 0;      // largest full gap ĥ with a stable bridge (valid unless not_converged)
+    bool ok() const { return status == YoungLaplaceStatus::ok; }
+};
+
+// The shape for (β, r₀) — one ODE integration. nullopt when the profile never reaches the sphere.
+std::optional<BridgeShape> integrate_bridge(double filling_angle, double neck_radius, ContactAngle theta,
+                                            const YoungLaplaceTolerance& tol = {});
+
+// The same d and V computed by quadrature of the first integral (GSL QAG), an independent check
+// of the ODE integration: returns {half_gap, volume}.
+std::pair<double, double> bridge_by_quadrature(double filling_angle, double neck_radius, ContactAngle theta);
+
+// Rupture of a bridge of volume V̂: the fold of the constant-volume family. Also the neck radius there.
+struct Rupture {
+    double hhat = 0;
+    double neck_radius = 0;
+};
+std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
+
+// Bridges of one volume and contact angle: the constant-volume family is traced once (rupture,
+// widest neck), then each gap costs one root search. Use it for curves and grids.
+class YoungLaplaceBridge {
+public:
+    YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
+
+    // Valid when family_ok(); otherwise every solve() reports not_converged with family_message().
+    bool family_ok() const { return rupture_.has_value() && widest_neck_.has_value(); }
+    const std::string& family_message() const { return family_message_; }
+    double hhat_rupture() const { return rupture_ ? rupture_->hhat : 0.0; }
+
+    // The stable bridge at full gap ĥ ≥ 0. Never a silent number: status says whether a bridge
+    // exists (above_rupture: none), and not_converged / outside_scope carry a message.
+    YoungLaplaceResult solve(double hhat) const;
+
+private:
+    double vhat_;
+    ContactAngle theta_;
+    YoungLaplaceTolerance tol_;
+    std::optional<Rupture> rupture_;
+    std::optional<double> widest_neck_;
+    std::string family_message_;
+};
+
+// One-off convenience: YoungLaplaceBridge(vhat, theta, tol).solve(hhat).
+YoungLaplaceResult solve_young_laplace(double vhat, ContactAngle theta, double hhat,
+                                       const YoungLaplaceTolerance& tol = {});
+
+}  // namespace demscale::bridge
