@@ -101,11 +101,15 @@ class TableModel final : public BridgeModel {
 public:
     explicit TableModel(BridgeTable t) : table_(std::move(t)) {}
     std::string_view name() const override { return "table"; }
-    double hhat_rupture(double vhat, ContactAngle theta) const override { return table_.hhat_rupture(vhat, theta); }
-    double fhat(double vhat, ContactAngle theta, double hhat) const override { return table_.fhat(vhat, theta, hhat); }
+    double hhat_rupture(double vhat, ContactAngle theta) const override { return pair(vhat, theta).hhat_rupture; }
+    double fhat(double vhat, ContactAngle theta, double hhat) const override { return pair(vhat, theta).fhat(hhat); }
 
 private:
+    const BridgeTable::Pair& pair(double vhat, ContactAngle theta) const {
+        return cache_.get(vhat, theta, [&] { return table_.prepare(vhat, theta); });
+    }
     BridgeTable table_;
+    PerPairCache<BridgeTable::Pair> cache_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,7 +15,10 @@ namespace demscale::bridge {
 
 namespace {
 
-double gap_fraction(double t) { return 1.0 - (1.0 - t) * (1.0 - t); }  // ĥ/ĥ_c at grid coordinate t
+// ĥ/ĥ_c at grid coordinate t ∈ [0, 1]: nodes cluster at contact (fast decay at small V̂) and at
+// rupture, where 1 − x ∝ (1 − t)² turns the square-root fold into a smooth function of t.
+double gap_fraction(double t) { return 0.5 * (1.0 - std::cos(std::numbers::pi * t)); }
+double gap_coordinate(double x) { return std::acos(1.0 - 2.0 * x) / std::numbers::pi; }
 
 // Catmull–Rom through p[0..3] at nodes −1, 0, 1, 2, evaluated at f ∈ [0, 1].
 double catmull_rom(const double p[4], double f) {
@@ -63,7 +67,7 @@ BridgeTable BridgeTable::generate(const BridgeTableGrid& g, const std::function<
                     throw std::runtime_error("table node V^ = " + format_number(vhat) + ", theta = " +
                                              format_number(theta.degrees()) + " deg, h^/h^_c = " + format_number(x) +
                                              ": " + r.message);
-                table.fhat_[(static_cast<std::size_t>(iv) * g.theta_points + it) * g.gap_points + ix] = r.shape.fhat_neck;
+                table.fhat_[(static_cast<std::size_t>(iv) * g.theta_points + it) * g.gap_points + ix] = std::log(r.shape.fhat_neck);
             }
             if (progress) progress(iv * g.theta_points + it + 1, total);
         }
@@ -74,7 +78,7 @@ BridgeTable BridgeTable::generate(const BridgeTableGrid& g, const std::function<
 std::string BridgeTable::to_csv() const {
     std::ostringstream out;
     out << "# demscale tabulated Young-Laplace bridge between equal spheres (generate: demscale bridge-table)\n"
-        << "# fhat = F/(2 pi R gamma); hhat = full gap / R; x = hhat/hhat_rupture = 1 - (1 - t)^2, t uniform\n"
+        << "# fhat = F/(2 pi R gamma); hhat = full gap / R; x = hhat/hhat_rupture = (1 - cos(pi t))/2, t uniform\n"
         << "# grid: vhat_min=" << format_number(grid_.vhat_min) << " vhat_max=" << format_number(grid_.vhat_max)
         << " vhat_points=" << grid_.vhat_points << " theta_max_deg=" << format_number(grid_.theta_max_deg)
         << " theta_points=" << grid_.theta_points << " gap_points=" << grid_.gap_points << "\n"
@@ -87,7 +91,7 @@ std::string BridgeTable::to_csv() const {
                                                                           (g.vhat_points - 1)))
                     << "," << format_number(g.theta_max_deg * it / (g.theta_points - 1)) << ","
                     << format_number(gap_fraction(double(ix) / (g.gap_points - 1))) << ","
-                    << format_number(std::exp(ln_hc_[iv * g.theta_points + it])) << "," << format_number(at(iv, it, ix))
+                    << format_number(std::exp(ln_hc_[iv * g.theta_points + it])) << "," << format_number(std::exp(at(iv, it, ix)))
                     << "\n";
     return out.str();
 }
@@ -127,7 +131,8 @@ BridgeTable BridgeTable::load(const std::string& path) {
         const double hc = std::strtod(csv.rows[i][3].c_str(), nullptr), f = std::strtod(csv.rows[i][4].c_str(), nullptr);
         if (!(std::isfinite(f) && f >= 0 && std::isfinite(hc) && hc > 0))
             throw InputError(path + ":" + std::to_string(csv.row_lines[i]), csv.rows[i][4], "finite fhat >= 0 and hhat_rupture > 0");
-        t.fhat_[i] = f;
+        if (!(f > 0)) throw InputError(path + ":" + std::to_string(csv.row_lines[i]), csv.rows[i][4], "fhat > 0 (stable bridges only)");
+        t.fhat_[i] = std::log(f);  // interpolated in ln F^: its variation is multiplicative
         t.ln_hc_[i / g.gap_points] = std::log(hc);
     }
     return t;
@@ -162,21 +167,34 @@ double BridgeTable::hhat_rupture(double vhat, ContactAngle theta) const {
     return std::exp(cubic_1d(along_theta, grid_.vhat_points, iv, fv));
 }
 
-double BridgeTable::fhat(double vhat, ContactAngle theta, double hhat) const {
-    const double hc = hhat_rupture(vhat, theta);
-    const double x = std::max(hhat, 0.0) / hc;
-    if (x > 1.0) return 0.0;
+BridgeTable::Pair BridgeTable::prepare(double vhat, ContactAngle theta) const {
     double sv, st;
     locate(vhat, theta, sv, st);
-    const double sx = (1.0 - std::sqrt(1.0 - x)) * (grid_.gap_points - 1);
-    int iv, it, ix;
-    double fv, ft, fx;
+    int iv, it;
+    double fv, ft;
     stencil(sv, grid_.vhat_points, iv, fv);
     stencil(st, grid_.theta_points, it, ft);
-    stencil(sx, grid_.gap_points, ix, fx);
-    auto along_gap = [&](int v, int th) { return cubic_1d([&](int k) { return at(v, th, k); }, grid_.gap_points, ix, fx); };
-    auto along_theta = [&](int v) { return cubic_1d([&](int th) { return along_gap(v, th); }, grid_.theta_points, it, ft); };
-    return std::max(cubic_1d(along_theta, grid_.vhat_points, iv, fv), 0.0);
+    Pair p;
+    p.hhat_rupture = hhat_rupture(vhat, theta);
+    for (int ix = 0; ix < grid_.gap_points; ++ix) {
+        auto along_theta = [&](int v) {
+            return cubic_1d([&](int th) { return at(v, th, ix); }, grid_.theta_points, it, ft);
+        };
+        p.column.push_back(cubic_1d(along_theta, grid_.vhat_points, iv, fv));
+    }
+    return p;
 }
+
+double BridgeTable::Pair::fhat(double hhat) const {
+    const double x = std::max(hhat, 0.0) / hhat_rupture;
+    if (x > 1.0) return 0.0;
+    const int n = static_cast<int>(column.size());
+    int ix;
+    double fx;
+    stencil(gap_coordinate(x) * (n - 1), n, ix, fx);
+    return std::exp(cubic_1d([&](int k) { return column[k]; }, n, ix, fx));
+}
+
+double BridgeTable::fhat(double vhat, ContactAngle theta, double hhat) const { return prepare(vhat, theta).fhat(hhat); }
 
 }  // namespace demscale::bridge

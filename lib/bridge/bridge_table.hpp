@@ -1,8 +1,9 @@
 // The exact (Young–Laplace) bridge tabulated and interpolated: the "accurate but still fast" model.
-// Grid: ln V̂ uniform, θ uniform, and t uniform with ĥ/ĥ_c = 1 − (1 − t)², which clusters nodes near
-// rupture where F̂ has a square-root singularity in the gap (the constant-volume family folds there).
-// Interpolation: tricubic Catmull–Rom (C¹, so DEM forces are continuous with continuous slopes);
-// ln ĥ_c is interpolated the same way in (ln V̂, θ). Stored as CSV under data/.
+// Grid: ln V̂ uniform, θ uniform, and t uniform with ĥ/ĥ_c = (1 − cos πt)/2, which clusters nodes at
+// contact (F̂ falls fast there at small V̂) and at rupture, where F̂ has a square-root singularity in
+// the gap (the constant-volume family folds there). Interpolation: tricubic Catmull–Rom in ln F̂
+// (C¹, so DEM forces are continuous with continuous slopes); ln ĥ_c the same way in (ln V̂, θ).
+// Stored as CSV under data/.
 #pragma once
 
 #include <functional>
@@ -18,7 +19,7 @@ struct BridgeTableGrid {
     int vhat_points = 16;
     double theta_max_deg = 40;  // the exact solver's concave scope ends near 50 deg at V^ = 0.3
     int theta_points = 5;
-    int gap_points = 17;
+    int gap_points = 25;
 };
 
 class BridgeTable {
@@ -35,6 +36,14 @@ public:
     // Throw InputError outside the tabulated (V̂, θ) range.
     double hhat_rupture(double vhat, ContactAngle theta) const;
     double fhat(double vhat, ContactAngle theta, double hhat) const;  // F/(2πRγ)
+
+    // One pair type: the (V̂, θ) interpolation done once, leaving a 1-D cubic in the gap per call.
+    struct Pair {
+        double hhat_rupture = 0;
+        std::vector<double> column;  // F̂ at the gap nodes
+        double fhat(double hhat) const;
+    };
+    Pair prepare(double vhat, ContactAngle theta) const;
 
 private:
     BridgeTableGrid grid_;

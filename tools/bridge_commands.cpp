@@ -1,0 +1,139 @@
+// Subcommands of the liquid-bridge study: bridge (one evaluation), bridge-table (generate the
+// tabulated exact model), bridge-error (every model against the exact solution), bench (costs).
+#include <iostream>
+#include <memory>
+
+#include "bridge/bridge_cost.hpp"
+#include "bridge/bridge_model.hpp"
+#include "bridge/bridge_table.hpp"
+#include "bridge/young_laplace.hpp"
+#include "cli_common.hpp"
+#include "core/input_error.hpp"
+#include "io/atomic_file.hpp"
+#include "report/bridge_error_files.hpp"
+
+namespace demscale::cli {
+
+namespace {
+
+struct Options {
+    double vhat = 0.05544, theta_deg = 0, hhat = 0;
+    std::string model = "exact";
+    std::string format = "text";
+    std::string table = default_bridge_table;
+    std::string out = default_bridge_table;
+    std::string out_dir = default_plots;
+    bool quick = false, no_png = false;
+    double seconds = 0.2;
+};
+
+int run_bridge(const Options& o) {
+    require_positive(o.vhat, "--vhat");
+    require_finite(o.hhat, "--hhat");
+    const ContactAngle theta{Degrees{o.theta_deg}};
+    const auto format = io::parse_format(o.format, "--format");
+    io::Table t;
+    t.title = "Liquid bridge between equal spheres";
+    t.metadata = {{"normalisation", "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = full gap / R; vhat = V / R^3"}};
+    t.columns = {"model", "vhat", "theta_deg", "hhat", "f_over_2pi_r_gamma", "hhat_rupture", "bridge_exists"};
+    std::vector<io::Cell> row = {o.model, o.vhat, o.theta_deg, o.hhat};
+    if (o.model == "exact") {
+        const auto r = bridge::solve_young_laplace(o.vhat, theta, std::max(o.hhat, 0.0));
+        if (r.status == bridge::YoungLaplaceStatus::not_converged || r.status == bridge::YoungLaplaceStatus::outside_scope)
+            throw std::runtime_error("exact bridge: " + r.message);
+        t.columns.insert(t.columns.end(), {"neck_radius_over_r", "filling_angle_deg", "curvature_kappa", "volume_check"});
+        row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0});
+        if (r.ok()) row.insert(row.end(), {r.shape.neck_radius, r.shape.filling_angle * 180 / M_PI, r.shape.curvature, r.shape.volume});
+        else row.insert(row.end(), 4, io::Cell(std::string("-")));  // no bridge: no shape
+        if (!r.ok()) t.notes.push_back(r.message + ": no bridge, force 0");
+        if (o.hhat < 0) t.notes.push_back("h^ < 0 (overlap) evaluated at contact, h^ = 0");
+    } else {
+        const auto m = bridge::make_bridge_model(o.model, o.table);
+        const double hc = m->hhat_rupture(o.vhat, theta);
+        const bool exists = o.hhat <= hc;
+        row.insert(row.end(), {m->fhat(o.vhat, theta, o.hhat), hc, exists ? 1.0 : 0.0});
+        if (!exists) t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(hc) + "): no bridge, force 0");
+    }
+    t.rows.push_back(std::move(row));
+    std::cout << io::render(t, format);
+    return 0;
+}
+
+int run_bridge_table(const Options& o) {
+    const auto table = bridge::BridgeTable::generate({}, progress_printer("bridge-table (V^, theta) nodes"));
+    io::write_file_atomically(o.out, table.to_csv());
+    std::cout << "wrote " << o.out << "\n";
+    return 0;
+}
+
+int run_bridge_error(const Options& o) {
+    const auto format = io::parse_format(o.format, "--format");
+    const auto grid = report::default_bridge_error_grid(o.quick);
+    const auto study = report::bridge_error_study(grid, o.table, o.quick ? 4 : 16, o.quick ? 5 : 21,
+                                                  o.quick ? 0.02 : 0.2, progress_printer("bridge-error (V^, theta)"));
+    const auto files = report::write_bridge_error_files(study, o.out_dir, !o.no_png);
+    if (format == io::Format::csv) {
+        std::cout << io::render(study.points, format);
+        return 0;
+    }
+    std::cout << io::render(study.summary, format);
+    for (const auto& f : files) std::cerr << "wrote " << f.string() << "\n";
+    return 0;
+}
+
+int run_bench(const Options& o) {
+    io::Table t;
+    t.title = "Cost of one bridge force evaluation (median of 5 runs, one pair type: per-pair setup cached)";
+    t.metadata = {{"pair", "V^ = 0.05544 (Table 1), theta = 0, gaps spread over [0, h^_rupture]"},
+                  {"timing", "each run sized to about " + format_number(o.seconds) + " s; ratios taken within this one run"}};
+    t.columns = {"model", "ns_per_evaluation", "relative_to_mikami1998", "evaluations_per_run"};
+    const ContactAngle zero{Degrees{0}};
+    double mikami_ns = 0;
+    for (auto name : bridge::bridge_model_names()) {
+        const auto m = bridge::make_bridge_model(name, o.table);
+        const auto c = bridge::measure_evaluation_cost(*m, 0.05544, zero, o.seconds);
+        if (name == "mikami1998") mikami_ns = c.ns_per_evaluation;
+        t.rows.push_back({std::string(name), c.ns_per_evaluation, 0.0, static_cast<double>(c.evaluations_per_run)});
+    }
+    for (auto& r : t.rows) r[2] = std::get<double>(r[1]) / mikami_ns;
+    std::cout << io::render(t, io::parse_format(o.format, "--format"));
+    return 0;
+}
+
+}  // namespace
+
+std::vector<Command> bridge_commands(CLI::App& app) {
+    auto o = std::make_shared<Options>();
+    std::string names;
+    for (auto n : bridge::bridge_model_names()) names += (names.empty() ? "" : "|") + std::string(n);
+
+    auto* one = app.add_subcommand("bridge", "one liquid-bridge force evaluation with any model");
+    one->add_option("--vhat", o->vhat, "liquid volume V/R^3")->capture_default_str();
+    one->add_option("--theta", o->theta_deg, "contact angle in degrees, [0, 90)")->capture_default_str();
+    one->add_option("--hhat", o->hhat, "full surface gap / R")->capture_default_str();
+    one->add_option("--model", o->model, names)->capture_default_str();
+    one->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
+    one->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
+
+    auto* gen = app.add_subcommand("bridge-table", "tabulate the exact bridge for --model table (about 20 s)");
+    gen->add_option("--out", o->out, "output CSV (default: data/bridge_table.csv)");
+
+    auto* err = app.add_subcommand("bridge-error", "every bridge model against the exact Young-Laplace solution");
+    err->add_flag("--quick", o->quick, "a small grid (seconds)");
+    err->add_option("--out", o->out_dir, "folder for CSV and plots (default: plots/)");
+    err->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
+    err->add_option("--format", o->format, "text | csv (points) | markdown | json")->capture_default_str();
+    err->add_flag("--no-png", o->no_png, "CSV and gnuplot scripts only");
+
+    auto* bench = app.add_subcommand("bench", "benchmark: cost per bridge force evaluation of every model");
+    bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(CLI::PositiveNumber);
+    bench->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
+    bench->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
+
+    return {{one, [o] { return run_bridge(*o); }},
+            {gen, [o] { return run_bridge_table(*o); }},
+            {err, [o] { return run_bridge_error(*o); }},
+            {bench, [o] { return run_bench(*o); }}};
+}
+
+}  // namespace demscale::cli

@@ -1,0 +1,59 @@
+#include "cli_common.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "core/input_error.hpp"
+
+namespace demscale::cli {
+
+std::string display_path(const std::string& path) {
+    const std::string root = source_dir + "/";
+    return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
+}
+
+io::TableConfig load_config(const std::string& path) {
+    auto c = io::load_table_config(path);
+    c.source = display_path(c.source);
+    return c;
+}
+
+std::vector<double> parse_exponents(const std::string& text, const std::string& field) {
+    std::vector<double> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        char* stop = nullptr;
+        const double k = std::strtod(item.c_str(), &stop);
+        if (item.empty() || stop != item.c_str() + item.size() || !(k > -20 && k < 20))
+            throw InputError(field, "\"" + item + "\"", "comma-separated numbers in (-20, 20), e.g. 1,3");
+        out.push_back(k);
+        start = end + 1;
+    }
+    return out;
+}
+
+std::string join_tables(const std::vector<io::Table>& tables, io::Format format) {
+    if (format == io::Format::json) {
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
+        for (const auto& t : tables) all.push_back(nlohmann::ordered_json::parse(io::render(t, format)));
+        return all.dump(2) + "\n";
+    }
+    std::string s;
+    for (const auto& t : tables) s += (s.empty() ? "" : "\n") + io::render(t, format);
+    return s;
+}
+
+std::function<void(int, int)> progress_printer(const std::string& what) {
+    const bool tty = ::isatty(STDERR_FILENO);
+    return [what, tty](int done, int total) {
+        if (tty) std::fprintf(stderr, "\r%s: %d/%d (%3.0f%%)%s", what.c_str(), done, total, 100.0 * done / total,
+                              done == total ? "\n" : "");
+        else if (done == total) std::fprintf(stderr, "%s: %d/%d done\n", what.c_str(), done, total);
+    };
+}
+
+}  // namespace demscale::cli

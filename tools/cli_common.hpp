@@ -1,0 +1,42 @@
+// What every subcommand shares: default paths in the source tree, input parsing helpers, and the
+// Command shape (a CLI11 subcommand plus the function that runs it and returns the exit code).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/table_config.hpp"
+#include "io/table_format.hpp"
+
+namespace demscale::cli {
+
+inline const std::string source_dir = DEMSCALE_SOURCE_DIR;
+inline const std::string default_config = source_dir + "/data/table1.toml";
+inline const std::string default_plots = source_dir + "/plots";
+inline const std::string default_references = source_dir + "/data/reference";
+inline const std::string default_bridge_table = source_dir + "/data/bridge_table.csv";
+
+struct Command {
+    CLI::App* app;
+    std::function<int()> run;
+};
+
+// Inputs named relative to the source tree when they live in it, so outputs carry no machine's paths.
+io::TableConfig load_config(const std::string& path);
+std::string display_path(const std::string& path);
+
+// "1,3" → {1, 3}; every item a finite number in (−20, 20). Throws InputError naming `field`.
+std::vector<double> parse_exponents(const std::string& text, const std::string& field = "--exponent");
+
+// Several tables in one output (a JSON array, or blocks separated by a blank line).
+std::string join_tables(const std::vector<io::Table>& tables, io::Format format);
+
+// A progress line on stderr, redrawn in place on a terminal and printed once at the end otherwise.
+std::function<void(int, int)> progress_printer(const std::string& what);
+
+std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regress, scaling
+std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
+
+}  // namespace demscale::cli
