@@ -85,6 +85,21 @@ case $case_name in
     expect 0 'gravity .* 1 +1 +scaled' -- "$demscale" scaling --length 4 --keep gravity,density
     grep -Eq 'time_step .* 2 +2 ' "$work/out" || fail "S_T should be 2 for S_L = 4 with g kept"
     expect 0 'BROKEN' -- "$demscale" scaling --length 4 --density 1 --time 4 --hold gravity ;;
+  bridge_exact_and_above_rupture)
+    expect 0 '^exact,0.05544,0,0,0.8186' -- "$demscale" bridge --vhat 0.05544 --hhat 0 --model exact --format csv
+    expect 0 'beyond rupture.*no bridge, force 0' -- "$demscale" bridge --vhat 0.05544 --hhat 0.5 --model mikami1998
+    grep -Eq 'mikami1998 +0.05544 +0 +0.5 +0 ' "$work/out" || fail "force above rupture must be 0" ;;
+  bridge_bad_input_exit_2)
+    expect 2 'did you mean willett' -- "$demscale" bridge --model wilett
+    expect 2 'contact_angle_deg = 95' -- "$demscale" bridge --theta 95
+    expect 2 '\-\-vhat = -1' -- "$demscale" bridge --vhat -1 ;;
+  bridge_error_quick)
+    expect 0 'mikami1998' -- "$demscale" bridge-error --quick --out "$work/be"
+    for f in bridge_error.csv bridge_error_summary.csv bridge_mikami_error.png bridge_speed_error.png; do
+      [ -s "$work/be/$f" ] || fail "$f missing"
+    done
+    head -20 "$work/be/bridge_error.csv" | grep -q '^vhat,theta_deg,x,hhat,fhat_exact,fhat_mikami,fhat_yun_park_2017,fhat_willett' \
+      || fail "bridge_error.csv header" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"
