@@ -154,34 +154,28 @@ void BridgeTable::locate(double vhat, ContactAngle theta, double& sv, double& st
     st = std::clamp(theta.degrees() / grid_.theta_max_deg * (grid_.theta_points - 1), 0.0, double(grid_.theta_points - 1));
 }
 
-double BridgeTable::hhat_rupture(double vhat, ContactAngle theta) const {
+// Cubic interpolation in (ln V̂, θ) of any per-node quantity node(iv, it).
+template <class Node>
+double BridgeTable::across_pairs(double vhat, ContactAngle theta, Node node) const {
     double sv, st;
     locate(vhat, theta, sv, st);
     int iv, it;
     double fv, ft;
     stencil(sv, grid_.vhat_points, iv, fv);
     stencil(st, grid_.theta_points, it, ft);
-    auto along_theta = [&](int v) {
-        return cubic_1d([&](int k) { return ln_hc_[v * grid_.theta_points + k]; }, grid_.theta_points, it, ft);
-    };
-    return std::exp(cubic_1d(along_theta, grid_.vhat_points, iv, fv));
+    auto along_theta = [&](int v) { return cubic_1d([&](int th) { return node(v, th); }, grid_.theta_points, it, ft); };
+    return cubic_1d(along_theta, grid_.vhat_points, iv, fv);
+}
+
+double BridgeTable::hhat_rupture(double vhat, ContactAngle theta) const {
+    return std::exp(across_pairs(vhat, theta, [&](int v, int th) { return ln_hc_[v * grid_.theta_points + th]; }));
 }
 
 BridgeTable::Pair BridgeTable::prepare(double vhat, ContactAngle theta) const {
-    double sv, st;
-    locate(vhat, theta, sv, st);
-    int iv, it;
-    double fv, ft;
-    stencil(sv, grid_.vhat_points, iv, fv);
-    stencil(st, grid_.theta_points, it, ft);
     Pair p;
     p.hhat_rupture = hhat_rupture(vhat, theta);
-    for (int ix = 0; ix < grid_.gap_points; ++ix) {
-        auto along_theta = [&](int v) {
-            return cubic_1d([&](int th) { return at(v, th, ix); }, grid_.theta_points, it, ft);
-        };
-        p.column.push_back(cubic_1d(along_theta, grid_.vhat_points, iv, fv));
-    }
+    for (int ix = 0; ix < grid_.gap_points; ++ix)
+        p.column.push_back(across_pairs(vhat, theta, [&](int v, int th) { return at(v, th, ix); }));
     return p;
 }
 

@@ -51,6 +51,8 @@ private:
     std::vector<double> ln_hc_;    // [v][θ]
     double at(int iv, int it, int ix) const;
     void locate(double vhat, ContactAngle theta, double& sv, double& st) const;
+    template <class Node>
+    double across_pairs(double vhat, ContactAngle theta, Node node) const;
 };
 
 }  // namespace demscale::bridge
