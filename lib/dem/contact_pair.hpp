@@ -1,0 +1,22 @@
+// What every contact law needs to know about one pair at one instant: effective radius and mass,
+// overlap, unit normal and relative velocity at the contact point. Particle–wall pairs use the
+// particle's own radius and mass (the wall is infinitely large and heavy). SI units.
+#pragma once
+
+#include "dem/particles.hpp"
+
+namespace demscale::dem {
+
+struct ContactPair {
+    double r_eff = 0;      // R* = R_i R_j / (R_i + R_j)   (wall: R_i)
+    double m_eff = 0;      // m* = m_i m_j / (m_i + m_j)   (wall: m_i)
+    double overlap = 0;    // δ = R_i + R_j − |x_i − x_j|  (> 0 in contact, < 0 a gap)
+    Vec3 normal;           // unit vector from j to i
+    Vec3 v_rel;            // velocity of i relative to j at the contact point
+    double v_normal = 0;   // v_rel · n (< 0 approaching)
+    Vec3 v_tangential;     // v_rel − v_normal n
+    Vec3 w_rel;            // ω_i − ω_j (rolling)
+    double dt = 0;         // time step, for history updates
+};
+
+}  // namespace demscale::dem

@@ -1,0 +1,79 @@
+#include "dem/neighbor_list.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace demscale::dem {
+
+void NeighborList::build(const Particles& p) {
+    pairs_.clear();
+    built_at_ = p.position;
+    ++builds_;
+    const std::size_t n = p.size();
+    if (n < 2) return;
+    const double r_max = *std::max_element(p.radius.begin(), p.radius.end());
+    const double cell = 2.0 * r_max + range_ + skin_;
+    Vec3 lo = p.position[0], hi = p.position[0];
+    for (const auto& x : p.position) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    std::array<long, 3> dims{};
+    for (int k = 0; k < 3; ++k) dims[k] = std::max(1L, static_cast<long>(std::floor((hi[k] - lo[k]) / cell)) + 1);
+    if (static_cast<double>(dims[0]) * static_cast<double>(dims[1]) * static_cast<double>(dims[2]) > 1e8)
+        throw std::runtime_error("neighbour grid too large: particles spread over " + std::to_string(dims[0]) + " x " +
+                                 std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " cells");
+    auto cell_of = [&](const Vec3& x, int k) { return std::min(dims[k] - 1, static_cast<long>((x[k] - lo[k]) / cell)); };
+    // Counting sort of particles into cells.
+    const std::size_t cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
+    std::vector<std::uint32_t> start(cells + 1, 0), order(n);
+    std::vector<std::size_t> index(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& x = p.position[i];
+        index[i] = static_cast<std::size_t>((cell_of(x, 2) * dims[1] + cell_of(x, 1)) * dims[0] + cell_of(x, 0));
+        ++start[index[i] + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) order[fill[index[i]]++] = static_cast<std::uint32_t>(i);
+
+    const double gap = range_ + skin_;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& x = p.position[i];
+        const long cx = cell_of(x, 0), cy = cell_of(x, 1), cz = cell_of(x, 2);
+        for (long dz = -1; dz <= 1; ++dz)
+            for (long dy = -1; dy <= 1; ++dy)
+                for (long dx = -1; dx <= 1; ++dx) {
+                    const long X = cx + dx, Y = cy + dy, Z = cz + dz;
+                    if (X < 0 || Y < 0 || Z < 0 || X >= dims[0] || Y >= dims[1] || Z >= dims[2]) continue;
+                    const std::size_t c = static_cast<std::size_t>((Z * dims[1] + Y) * dims[0] + X);
+                    for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+                        const std::uint32_t j = order[k];
+                        if (j <= i) continue;
+                        const double reach = p.radius[i] + p.radius[j] + gap;
+                        if ((p.position[j] - x).squaredNorm() < reach * reach)
+                            pairs_.emplace_back(static_cast<std::uint32_t>(i), j);
+                    }
+                }
+    }
+    std::sort(pairs_.begin(), pairs_.end());
+}
+
+bool NeighborList::needs_rebuild(const Particles& p) const {
+    if (built_at_.size() != p.size()) return true;
+    const double limit = 0.25 * skin_ * skin_;  // (skin/2)²
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if ((p.position[i] - built_at_[i]).squaredNorm() > limit) return true;
+    return false;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, double gap) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+        for (std::uint32_t j = i + 1; j < p.size(); ++j) {
+            const double reach = p.radius[i] + p.radius[j] + gap;
+            if ((p.position[j] - p.position[i]).squaredNorm() < reach * reach) out.emplace_back(i, j);
+        }
+    return out;
+}
+
+}  // namespace demscale::dem

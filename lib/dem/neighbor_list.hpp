@@ -1,0 +1,35 @@
+// Verlet neighbour list built with a cell list. A pair is listed when its surfaces are closer than
+// range + skin, where range is the contact law's reach beyond touching (the bridge's rupture gap),
+// so no bridge is missed. Rebuilt when any particle has moved more than skin/2 since the last build.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "dem/particles.hpp"
+
+namespace demscale::dem {
+
+class NeighborList {
+public:
+    NeighborList(double range, double skin) : range_(range), skin_(skin) {}
+
+    // Pairs (i < j) in ascending order of (i, j).
+    void build(const Particles& p);
+    bool needs_rebuild(const Particles& p) const;
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
+    std::size_t builds() const { return builds_; }
+    double cutoff_gap() const { return range_ + skin_; }
+
+private:
+    double range_, skin_;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+    std::vector<Vec3> built_at_;
+    std::size_t builds_ = 0;
+};
+
+// All pairs whose surface gap is below `gap`, by checking every pair: the reference for tests.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, double gap);
+
+}  // namespace demscale::dem

@@ -1,0 +1,18 @@
+// Critical time steps of a scene. Rayleigh time T_R = π R √(ρ/G) / (0.1631 ν + 0.8766) (EDEM docs,
+// physics.md §6) and the Hertz contact duration T_H = 2.87 (m*² / (R* E*² v))^(1/5) (elastic impact
+// at speed v; Johnson 1985). demscale takes dt ≤ 0.2 T_R as safe. SI units.
+#pragma once
+
+#include "dem/material.hpp"
+
+namespace demscale::dem {
+
+double rayleigh_time(const Material& m, double radius);
+double hertz_contact_time(double e_star, double r_eff, double m_eff, double impact_speed);
+// Linear spring–dashpot contact duration π / √(k/m* − (c/2m*)²).
+double linear_contact_time(double k, double m_eff, double restitution);
+
+// Throws InputError naming the step and the limit when dt > safety·critical, unless forced.
+void check_time_step(double dt, double critical, double safety, bool force);
+
+}  // namespace demscale::dem

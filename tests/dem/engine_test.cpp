@@ -1,0 +1,126 @@
+// Neighbour search, conservation laws and the liquid bridge inside the engine.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "bridge/mikami.hpp"
+#include "dem/simulation.hpp"
+
+using namespace demscale;
+using namespace demscale::dem;
+
+namespace {
+
+// n polydisperse spheres (0.5-1.5 mm) at random, non-overlapping positions in a cube of side L.
+Particles random_cloud(int n, double side, unsigned seed, double speed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    Particles p;
+    while (static_cast<int>(p.size()) < n) {
+        const double r = 0.5e-3 + 1e-3 * u(rng);
+        const Vec3 x(side * u(rng), side * u(rng), side * u(rng));
+        bool free = true;
+        for (std::size_t k = 0; k < p.size() && free; ++k) free = (p.position[k] - x).norm() > p.radius[k] + r;
+        if (free) p.add(x, r, 2500, speed * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    }
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("Neighbour list equals brute force, also after many rebuilds", "[dem][neighbors]") {
+    Particles p = random_cloud(400, 0.03, 7, 0);
+    NeighborList list(0.3e-3, 0.2e-3);
+    list.build(p);
+    CHECK(list.pairs() == brute_force_pairs(p, list.cutoff_gap()));
+    // Random walks: whenever the list says it is still valid, every pair within the interaction range is in it.
+    std::mt19937 rng(11);
+    std::normal_distribution<double> step(0, 0.02e-3);
+    int rebuilds = 0;
+    for (int n = 0; n < 300; ++n) {
+        for (auto& x : p.position) x += Vec3(step(rng), step(rng), step(rng));
+        if (list.needs_rebuild(p)) {
+            list.build(p);
+            ++rebuilds;
+            REQUIRE(list.pairs() == brute_force_pairs(p, list.cutoff_gap()));
+        }
+        for (const auto& pair : brute_force_pairs(p, 0.3e-3))
+            REQUIRE(std::binary_search(list.pairs().begin(), list.pairs().end(), pair));
+    }
+    CHECK(rebuilds > 5);
+}
+
+TEST_CASE("Free cloud with friction conserves linear and angular momentum", "[dem][conservation]") {
+    Material m;
+    m.youngs_modulus = 5e6;
+    m.restitution = 0.5;
+    m.friction = 0.5;
+    Particles p = random_cloud(150, 0.012, 3, 0.5);
+    Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin>(m), {}, Vec3::Zero(), 2e-6, 0.2e-3);
+    const Vec3 p0 = sim.linear_momentum(), l0 = sim.angular_momentum();
+    const double e0 = sim.energy().kinetic;
+    double scale_p = 0, scale_l = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        scale_p += p.mass[i] * p.velocity[i].norm();
+        scale_l += p.mass[i] * p.velocity[i].norm() * p.position[i].norm();
+    }
+    for (int n = 0; n < 3000; ++n) sim.step();
+    CHECK(sim.energy().kinetic < e0);  // collisions happened and dissipated
+    CHECK((sim.linear_momentum() - p0).norm() < 1e-12 * scale_p);
+    CHECK((sim.angular_momentum() - l0).norm() < 1e-9 * scale_l);
+}
+
+TEST_CASE("Elastic frictionless spheres in a box keep their energy over many collisions", "[dem][conservation]") {
+    Material m;
+    m.youngs_modulus = 5e6;
+    m.restitution = 1.0;
+    Particles p = random_cloud(60, 0.01, 5, 0.3);
+    for (auto& x : p.position) x += Vec3(2e-3, 2e-3, 2e-3);
+    std::vector<PlaneWall> box;
+    for (int k = 0; k < 3; ++k) {
+        box.push_back({Vec3::Zero(), Vec3::Unit(k)});
+        box.push_back({Vec3::Constant(0.014), -Vec3::Unit(k)});
+    }
+    Simulation sim(p, ContactLaw<NormalHertz>(m), box, Vec3::Zero(), 1e-6, 0.2e-3);
+    const auto total = [&] { const auto e = sim.energy(); return e.kinetic + e.elastic; };
+    const double e0 = total();
+    for (int n = 0; n < 20000; ++n) sim.step();
+    CHECK(std::abs(total() - e0) < 1e-4 * e0);
+}
+
+TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until contact", "[dem][bridge]") {
+    const double r = 1e-3, gamma = 0.074, vhat = 0.05544;
+    Material m;
+    const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+    Particles p;
+    p.add({0, 0, 0}, r, 2200);
+    p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
+    Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, gamma}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
+    CHECK(sim.neighbors().cutoff_gap() >= k.hhat_rupture * r);  // the search reaches the rupture gap
+    auto held_at = [&](double hhat) {
+        sim.particles().position[1] = Vec3(2 * r + hhat * r, 0, 0);
+        sim.refresh_forces();
+        return sim.particles().force[0].x();  // attraction pulls particle 0 towards +x
+    };
+    for (double hhat : {0.01, 0.1, 0.3}) {
+        INFO("hhat = " << hhat);
+        CHECK(held_at(hhat) == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, hhat)).epsilon(1e-12));
+        CHECK(sim.particles().force[1].x() == Approx(-sim.particles().force[0].x()));
+    }
+    CHECK(held_at(k.hhat_rupture * 1.001) == 0.0);  // ruptured
+    CHECK(held_at(0.1) == 0.0);                     // back within range: no bridge until contact
+    held_at(0.0);                                   // contact: forms again
+    CHECK(held_at(0.1) == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, 0.1)).epsilon(1e-12));
+}
+
+TEST_CASE("Bad scenes stop with the particle and the step", "[dem][errors]") {
+    Material m;
+    Particles p;
+    p.add({0, 0, 1e-3}, 1e-3, 2500, {0, 0, -50});
+    Simulation sim(p, ContactLaw<NormalHertz>(m), {PlaneWall{}}, Vec3::Zero(), 1e-5, 1e-4);
+    CHECK_THROWS_WITH([&] { for (int n = 0; n < 100; ++n) sim.step(); }(), Catch::Matchers::Contains("particle 0 left the domain"));
+    CHECK_THROWS_WITH(Particles().add({0, 0, 0}, -1e-3, 2500), Catch::Matchers::Contains("particle radius = -0.001"));
+    CHECK_THROWS_AS(Particles().add({NAN, 0, 0}, 1e-3, 2500), InputError);
+}
