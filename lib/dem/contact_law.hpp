@@ -1,7 +1,8 @@
-// A contact law composed from one normal law and optional tangential and cohesion laws, fixed at
-// compile time: ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge>. An "off" part
-// (TangentialNone, CohesionNone) has no state and compiles to nothing in the force loop, so a dry
-// scene pays nothing for liquid bridges. Call order: normal → cohesion → tangential.
+// A contact law composed from one normal law and optional tangential, cohesion and rolling laws,
+// fixed at compile time: ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>.
+// An "off" part (TangentialNone, CohesionNone, RollingNone) has no state and compiles to nothing in
+// the force loop, so a dry scene pays nothing for liquid bridges. Call order: normal → cohesion →
+// tangential → rolling.
 #pragma once
 
 #include <utility>
@@ -10,6 +11,7 @@
 #include "dem/laws/cohesion.hpp"
 #include "dem/laws/normal_hertz.hpp"
 #include "dem/laws/normal_linear.hpp"
+#include "dem/laws/rolling.hpp"
 #include "dem/laws/tangential.hpp"
 
 namespace demscale::dem {
@@ -17,20 +19,24 @@ namespace demscale::dem {
 struct ContactForce {
     Vec3 on_i = Vec3::Zero();       // force on particle i (j gets −on_i)
     Vec3 tangential = Vec3::Zero(); // its tangential part (for torques)
+    Vec3 rolling_torque = Vec3::Zero();  // on i (j gets the opposite)
     double damping_power = 0;       // F_damping · v_rel (≤ 0), W
 };
 
-template <class Normal, class Tangential = TangentialNone, class Cohesion = CohesionNone>
+template <class Normal, class Tangential = TangentialNone, class Cohesion = CohesionNone, class Rolling = RollingNone>
 struct ContactLaw {
     Normal normal;
     Tangential tangential;
     Cohesion cohesion;
+    Rolling rolling;
 
-    explicit ContactLaw(const Material& m, Cohesion c = {}) : normal(m), tangential(m), cohesion(std::move(c)) {}
+    explicit ContactLaw(const Material& m, Cohesion c = {})
+        : normal(m), tangential(m), cohesion(std::move(c)), rolling(m) {}
 
     struct State {
         [[no_unique_address]] typename Tangential::State tangential;
         [[no_unique_address]] typename Cohesion::State cohesion;
+        [[no_unique_address]] typename Rolling::State rolling;
     };
 
     // Interaction range beyond touching surfaces, m (0 for dry laws).
@@ -49,8 +55,10 @@ struct ContactLaw {
         if (c.overlap > 0) {
             out.tangential = tangential.force(c, fn, s.tangential);
             out.on_i += out.tangential;
-        } else {
-            s.tangential = {};  // surfaces apart: the tangential spring is released
+            out.rolling_torque = rolling.torque(c, normal.stiffness(c), fn, s.rolling);
+        } else {  // surfaces apart: tangential and rolling springs are released
+            s.tangential = {};
+            s.rolling = {};
         }
         return out;
     }

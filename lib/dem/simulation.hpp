@@ -152,8 +152,8 @@ private:
             p_.force[i] += f.on_i;
             p_.force[j] -= f.on_i;
             const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
-            p_.torque[i] += (-li * c.normal).cross(f.tangential);
-            p_.torque[j] += (lj * c.normal).cross(-f.tangential);
+            p_.torque[i] += (-li * c.normal).cross(f.tangential) + f.rolling_torque;
+            p_.torque[j] += (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
             elastic += law_.elastic_energy(c);
             damping_power += f.damping_power;
         }
@@ -173,7 +173,7 @@ private:
                 const ContactPair c = pair_geometry(i, foot, Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, true);
                 const ContactForce f = law_.force(c, wall_state_[w][i]);
                 p_.force[i] += f.on_i;
-                p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential);
+                p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
                 elastic += law_.elastic_energy(c);
                 damping_power += f.damping_power;
             }
