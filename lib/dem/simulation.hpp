@@ -28,7 +28,7 @@ struct Energy {
 template <class Law>
 class Simulation {
 public:
-    Simulation(Particles particles, Law law, std::vector<PlaneWall> walls, Vec3 gravity, double dt, double skin)
+    Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
           neighbors_(law_.range(), skin) {
         require_positive(dt, "dt");
@@ -158,19 +158,16 @@ private:
             damping_power += f.damping_power;
         }
         for (std::size_t w = 0; w < walls_.size(); ++w) {
-            const PlaneWall& wall = walls_[w];
             for (std::size_t i = 0; i < p_.size(); ++i) {
-                const double dist = wall.distance(p_.position[i]);
-                if (!(dist > 0))
+                const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
+                if (wp.behind)
                     throw std::runtime_error("particle " + std::to_string(i) + " left the domain through wall " +
                                              std::to_string(w) + " at step " + std::to_string(steps_));
-                if (dist - p_.radius[i] > reach) {
+                if ((p_.position[i] - wp.point).norm() - p_.radius[i] > reach) {
                     wall_state_[w][i] = {};
                     continue;
                 }
-                // The wall as a mirror contact: a touching "partner" at the foot point, radius 0.
-                const Vec3 foot = p_.position[i] - dist * wall.normal;
-                const ContactPair c = pair_geometry(i, foot, Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, true);
+                const ContactPair c = pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
                 const ContactForce f = law_.force(c, wall_state_[w][i]);
                 p_.force[i] += f.on_i;
                 p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
@@ -189,7 +186,7 @@ private:
 
     Particles p_;
     Law law_;
-    std::vector<PlaneWall> walls_;
+    std::vector<Wall> walls_;
     Vec3 gravity_;
     double dt_;
     NeighborList neighbors_;

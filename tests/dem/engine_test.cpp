@@ -77,10 +77,10 @@ TEST_CASE("Elastic frictionless spheres in a box keep their energy over many col
     m.restitution = 1.0;
     Particles p = random_cloud(60, 0.01, 5, 0.3);
     for (auto& x : p.position) x += Vec3(2e-3, 2e-3, 2e-3);
-    std::vector<PlaneWall> box;
+    std::vector<Wall> box;
     for (int k = 0; k < 3; ++k) {
-        box.push_back({Vec3::Zero(), Vec3::Unit(k)});
-        box.push_back({Vec3::Constant(0.014), -Vec3::Unit(k)});
+        box.push_back(PlaneWall{Vec3::Zero(), Vec3::Unit(k)});
+        box.push_back(PlaneWall{Vec3::Constant(0.014), -Vec3::Unit(k)});
     }
     Simulation sim(p, ContactLaw<NormalHertz>(m), box, Vec3::Zero(), 1e-6, 0.2e-3);
     const auto total = [&] { const auto e = sim.energy(); return e.kinetic + e.elastic; };

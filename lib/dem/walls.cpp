@@ -1,0 +1,42 @@
+#include "dem/walls.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace demscale::dem {
+
+Vec3 FrustumWall::offset(double t) const {
+    if (move_end <= move_start) return Vec3::Zero();
+    return velocity * (std::clamp(t, move_start, move_end) - move_start);
+}
+
+Vec3 FrustumWall::velocity_at(double t) const {
+    return (move_end > move_start && t >= move_start && t < move_end) ? velocity : Vec3::Zero();
+}
+
+namespace {
+
+WallPoint closest(const PlaneWall& w, const Vec3& x, double) {
+    const double d = (x - w.point).dot(w.normal);
+    return {x - d * w.normal, Vec3::Zero(), !(d > 0)};
+}
+
+// The frustum's meridian is the segment (r_b, 0) → (r_t, H) in the (ρ, z) half-plane around its axis.
+WallPoint closest(const FrustumWall& w, const Vec3& x, double t) {
+    const Vec3 base = w.base_centre + w.offset(t);
+    const Vec3 rel = x - base;
+    const double rho = std::hypot(rel.x(), rel.y());
+    const Vec3 radial = rho > 0 ? Vec3(rel.x() / rho, rel.y() / rho, 0) : Vec3::UnitX();
+    const double dr = w.top_radius - w.bottom_radius, dz = w.height;
+    const double s = std::clamp(((rho - w.bottom_radius) * dr + rel.z() * dz) / (dr * dr + dz * dz), 0.0, 1.0);
+    const Vec3 point = base + (w.bottom_radius + s * dr) * radial + s * dz * Vec3::UnitZ();
+    return {point, w.velocity_at(t), false};
+}
+
+}  // namespace
+
+WallPoint closest_wall_point(const Wall& wall, const Vec3& centre, double t) {
+    return std::visit([&](const auto& w) { return closest(w, centre, t); }, wall);
+}
+
+}  // namespace demscale::dem

@@ -1,0 +1,59 @@
+// Analytic walls: closest points against hand geometry, motion windows, and a bounce.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "dem/simulation.hpp"
+
+using namespace demscale::dem;
+
+TEST_CASE("Frustum wall: closest point and distance from meridian geometry", "[dem][walls]") {
+    // Kantro cone: r_b = 19 mm, r_t = 9.5 mm, H = 57 mm. For a point at (rho, z) whose projection falls
+    // inside the segment, the distance to the surface is |(rho - r_b) H - z (r_t - r_b)| / sqrt(H^2 + (r_t - r_b)^2).
+    const FrustumWall cone{};
+    const double dr = -0.0095, H = 0.057, L = std::hypot(dr, H);
+    for (double rho : {0.0, 0.005, 0.015, 0.03})
+        for (double z : {0.01, 0.03}) {
+            const Vec3 x(rho * std::cos(0.7), rho * std::sin(0.7), z);
+            const auto wp = closest_wall_point(cone, x, 0.0);
+            const double expected = std::abs((rho - 0.019) * H - z * dr) / L;
+            INFO("rho=" << rho << " z=" << z);
+            CHECK((x - wp.point).norm() == Approx(expected).epsilon(1e-12));
+            CHECK_FALSE(wp.behind);
+        }
+    // Beyond the rims the closest point is the rim itself.
+    const auto above = closest_wall_point(cone, Vec3(0, 0, 0.1), 0.0);
+    CHECK(above.point.z() == Approx(0.057));
+    CHECK(std::hypot(above.point.x(), above.point.y()) == Approx(0.0095));
+    // A cylinder is a frustum with equal radii: distance |R - rho|.
+    const FrustumWall cylinder{Vec3::Zero(), 0.01, 0.01, 0.05, Vec3::Zero(), 0, 0};
+    CHECK((Vec3(0.004, 0.003, 0.02) - closest_wall_point(cylinder, Vec3(0.004, 0.003, 0.02), 0).point).norm() ==
+          Approx(0.005).epsilon(1e-12));
+}
+
+TEST_CASE("Frustum wall moves only inside its time window", "[dem][walls]") {
+    FrustumWall cone{};
+    cone.velocity = Vec3(0, 0, 0.3);
+    cone.move_start = 0.1;
+    cone.move_end = 0.1 + 0.065 / 0.3;  // lifted 65 mm at 0.3 m/s
+    CHECK(cone.offset(0.05).norm() == 0.0);
+    CHECK(cone.offset(0.2).z() == Approx(0.03));
+    CHECK(cone.offset(10).z() == Approx(0.065));
+    CHECK(cone.velocity_at(0.2).z() == 0.3);
+    CHECK(cone.velocity_at(0.5).norm() == 0.0);
+    const auto wp = closest_wall_point(cone, Vec3(0, 0, 0.2 + 0.03), 10.0);
+    CHECK(wp.point.z() == Approx(0.057 + 0.065));
+}
+
+TEST_CASE("A sphere bounces off a cylinder wall with the law's restitution", "[dem][walls]") {
+    Material m;
+    m.linear_stiffness = 1e3;
+    m.restitution = 0.6;
+    const double r = 1e-3;
+    Particles p;
+    p.add({0.005, 0, 0.02}, r, 2500, {0.2, 0, 0});
+    const FrustumWall cylinder{Vec3::Zero(), 0.01, 0.01, 0.05, Vec3::Zero(), 0, 0};
+    Simulation sim(p, ContactLaw<NormalLinear>(m), {cylinder}, Vec3::Zero(), 1e-6, 0.1 * r);
+    for (int n = 0; n < 40000 && sim.particles().velocity[0].x() > -0.1; ++n) sim.step();
+    for (int n = 0; n < 2000; ++n) sim.step();  // well clear of the wall
+    CHECK(sim.particles().velocity[0].x() == Approx(-0.6 * 0.2).epsilon(0.005));
+}
