@@ -37,25 +37,34 @@ void NeighborList::build(const Particles& p) {
     for (std::size_t i = 0; i < n; ++i) order[fill[index[i]]++] = static_cast<std::uint32_t>(i);
 
     const double gap = range_ + skin_;
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto& x = p.position[i];
-        const long cx = cell_of(x, 0), cy = cell_of(x, 1), cz = cell_of(x, 2);
-        for (long dz = -1; dz <= 1; ++dz)
-            for (long dy = -1; dy <= 1; ++dy)
-                for (long dx = -1; dx <= 1; ++dx) {
-                    const long X = cx + dx, Y = cy + dy, Z = cz + dz;
-                    if (X < 0 || Y < 0 || Z < 0 || X >= dims[0] || Y >= dims[1] || Z >= dims[2]) continue;
-                    const std::size_t c = static_cast<std::size_t>((Z * dims[1] + Y) * dims[0] + X);
-                    for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
-                        const std::uint32_t j = order[k];
-                        if (j <= i) continue;
-                        const double reach = p.radius[i] + p.radius[j] + gap;
-                        if ((p.position[j] - x).squaredNorm() < reach * reach)
-                            pairs_.emplace_back(static_cast<std::uint32_t>(i), j);
+    const long count = static_cast<long>(n);
+#pragma omp parallel
+    {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> local;
+#pragma omp for schedule(static) nowait
+        for (long ii = 0; ii < count; ++ii) {
+            const std::size_t i = static_cast<std::size_t>(ii);
+            const auto& x = p.position[i];
+            const long cx = cell_of(x, 0), cy = cell_of(x, 1), cz = cell_of(x, 2);
+            for (long dz = -1; dz <= 1; ++dz)
+                for (long dy = -1; dy <= 1; ++dy)
+                    for (long dx = -1; dx <= 1; ++dx) {
+                        const long X = cx + dx, Y = cy + dy, Z = cz + dz;
+                        if (X < 0 || Y < 0 || Z < 0 || X >= dims[0] || Y >= dims[1] || Z >= dims[2]) continue;
+                        const std::size_t c = static_cast<std::size_t>((Z * dims[1] + Y) * dims[0] + X);
+                        for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+                            const std::uint32_t j = order[k];
+                            if (j <= i) continue;
+                            const double reach = p.radius[i] + p.radius[j] + gap;
+                            if ((p.position[j] - x).squaredNorm() < reach * reach)
+                                local.emplace_back(static_cast<std::uint32_t>(i), j);
+                        }
                     }
-                }
+        }
+#pragma omp critical
+        pairs_.insert(pairs_.end(), local.begin(), local.end());
     }
-    std::sort(pairs_.begin(), pairs_.end());
+    std::sort(pairs_.begin(), pairs_.end());  // fixed order whatever the thread count
 }
 
 bool NeighborList::needs_rebuild(const Particles& p) const {

@@ -20,6 +20,14 @@ public:
     bool needs_rebuild(const Particles& p) const;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
     std::size_t builds() const { return builds_; }
+
+    // Checkpoint support: the positions at the last build decide the next rebuild.
+    const std::vector<Vec3>& built_at() const { return built_at_; }
+    void restore(std::vector<Vec3> built_at, std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs, std::size_t builds) {
+        built_at_ = std::move(built_at);
+        pairs_ = std::move(pairs);
+        builds_ = builds;
+    }
     double cutoff_gap() const { return range_ + skin_; }
 
 private:

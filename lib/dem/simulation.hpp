@@ -1,14 +1,18 @@
-// The DEM engine for one contact law: particles, plane walls, gravity, velocity-Verlet integration
+// The DEM engine for one contact law: particles, walls, gravity, velocity-Verlet integration
 // (translation and rotation), a Verlet neighbour list with contact history carried across rebuilds,
-// and energy bookkeeping. SI units. Serial for now; the force loop is written pair by pair so it can
-// be split across threads later.
+// and energy bookkeeping. SI units.
+// Threads (OpenMP): pair forces are computed in parallel into a per-pair buffer, then each particle
+// sums its contributions in a fixed pair order, so results are bit-identical for any thread count.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <istream>
+#include <ostream>
 #include <stdexcept>
+#include <type_traits>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -73,6 +77,56 @@ public:
         return e;
     }
 
+    // Checkpoint: everything the next step depends on (particles with their current forces, time,
+    // energies, the neighbour list's reference positions and pairs with contact history, wall
+    // contact history), so that a restart continues bit for bit. Walls and the law come from the scene.
+    void save(std::ostream& out) const {
+        auto raw = [&](const void* data, std::size_t bytes) { out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes)); };
+        auto vec = [&](const auto& v) {
+            const std::uint64_t n = v.size();
+            raw(&n, sizeof n);
+            raw(v.data(), n * sizeof(v[0]));
+        };
+        raw(checkpoint_magic, sizeof checkpoint_magic);
+        vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
+        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&energy_, sizeof energy_);
+        const std::size_t builds = neighbors_.builds();
+        raw(&builds, sizeof builds);
+        vec(neighbors_.built_at()), vec(pairs_);
+        for (const auto& w : wall_state_) vec(w);
+        if (!out) throw std::runtime_error("cannot write checkpoint");
+    }
+
+    void load(std::istream& in) {
+        auto raw = [&](void* data, std::size_t bytes) {
+            in.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
+            if (!in) throw std::runtime_error("checkpoint truncated or unreadable");
+        };
+        auto vec = [&](auto& v) {
+            std::uint64_t n = 0;
+            raw(&n, sizeof n);
+            if (n > (1ULL << 34)) throw std::runtime_error("checkpoint corrupt (array of " + std::to_string(n) + ")");
+            v.resize(n);
+            raw(v.data(), n * sizeof(v[0]));
+        };
+        char magic[sizeof checkpoint_magic];
+        raw(magic, sizeof magic);
+        if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0) throw std::runtime_error("not a demscale checkpoint");
+        vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
+        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&energy_, sizeof energy_);
+        std::size_t builds = 0;
+        raw(&builds, sizeof builds);
+        std::vector<Vec3> built_at;
+        vec(built_at), vec(pairs_);
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> listed;
+        for (const auto& q : pairs_) listed.emplace_back(q.i, q.j);
+        neighbors_.restore(std::move(built_at), std::move(listed), builds);
+        for (auto& w : wall_state_) vec(w);
+        index_incidence();
+    }
+
     // Momenta about the origin: Σ m v and Σ (x × m v + I ω).
     Vec3 linear_momentum() const {
         Vec3 m = Vec3::Zero();
@@ -87,9 +141,17 @@ public:
     }
 
 private:
+    static constexpr char checkpoint_magic[16] = "demscale-ckpt-1";
+    // States are written as bytes: plain fixed-size data only.
+    static_assert(std::is_standard_layout_v<typename Law::State>);
+
     struct ListedPair {
         std::uint32_t i, j;
         typename Law::State state;
+    };
+    struct PairResult {  // what one pair contributes this step
+        Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
+        double elastic = 0, damping_power = 0;
     };
 
     void half_kick() {
@@ -99,17 +161,35 @@ private:
         }
     }
 
-    // New pair list; contact history moves with the pairs that are still listed.
+    // New pair list; contact history moves with the pairs that are still listed (both lists are
+    // sorted by (i, j), so one merge pass finds them).
     void rebuild() {
-        std::unordered_map<std::uint64_t, typename Law::State> old;
-        old.reserve(pairs_.size());
-        for (const auto& q : pairs_) old.emplace((std::uint64_t(q.i) << 32) | q.j, q.state);
+        std::vector<ListedPair> old;
+        old.swap(pairs_);
         neighbors_.build(p_);
-        pairs_.clear();
+        pairs_.reserve(neighbors_.pairs().size());
+        std::size_t k = 0;
         for (const auto& [i, j] : neighbors_.pairs()) {
-            auto it = old.find((std::uint64_t(i) << 32) | j);
-            pairs_.push_back({i, j, it == old.end() ? typename Law::State{} : it->second});
+            while (k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j)) ++k;
+            const bool kept = k < old.size() && old[k].i == i && old[k].j == j;
+            pairs_.push_back({i, j, kept ? old[k].state : typename Law::State{}});
         }
+        index_incidence();
+    }
+
+    // For each particle, the pairs it belongs to in ascending pair order (CSR), with its side:
+    // entry = 2·pair + (0 if it is i, 1 if it is j).
+    void index_incidence() {
+        incidence_start_.assign(p_.size() + 1, 0);
+        for (const auto& q : pairs_) ++incidence_start_[q.i + 1], ++incidence_start_[q.j + 1];
+        for (std::size_t k = 0; k < p_.size(); ++k) incidence_start_[k + 1] += incidence_start_[k];
+        incidence_.resize(2 * pairs_.size());
+        std::vector<std::uint32_t> fill(incidence_start_.begin(), incidence_start_.end() - 1);
+        for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+            incidence_[fill[pairs_[k].i]++] = 2 * k;
+            incidence_[fill[pairs_[k].j]++] = 2 * k + 1;
+        }
+        results_.assign(pairs_.size(), PairResult{});
     }
 
     ContactPair pair_geometry(std::size_t i, const Vec3& xj, const Vec3& vj, const Vec3& wj, double rj, double mj,
@@ -133,13 +213,13 @@ private:
     }
 
     void compute_forces() {
-        double elastic = 0, damping_power = 0;
-        for (std::size_t i = 0; i < p_.size(); ++i) {
-            p_.force[i] = p_.mass[i] * gravity_;
-            p_.torque[i].setZero();
-        }
         const double reach = law_.range();
-        for (auto& q : pairs_) {
+        const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p_.size());
+#pragma omp parallel for schedule(static)
+        for (long k = 0; k < n_pairs; ++k) {
+            auto& q = pairs_[static_cast<std::size_t>(k)];
+            PairResult& out = results_[static_cast<std::size_t>(k)];
+            out = PairResult{};
             const std::size_t i = q.i, j = q.j;
             const double gap = (p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j];
             if (gap > reach) {
@@ -149,20 +229,41 @@ private:
             const ContactPair c = pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j], p_.radius[j],
                                                 p_.mass[j], false);
             const ContactForce f = law_.force(c, q.state);
-            p_.force[i] += f.on_i;
-            p_.force[j] -= f.on_i;
             const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
-            p_.torque[i] += (-li * c.normal).cross(f.tangential) + f.rolling_torque;
-            p_.torque[j] += (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
-            elastic += law_.elastic_energy(c);
-            damping_power += f.damping_power;
+            out.force_i = f.on_i;
+            out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
+            out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+            out.elastic = law_.elastic_energy(c);
+            out.damping_power = f.damping_power;
         }
-        for (std::size_t w = 0; w < walls_.size(); ++w) {
-            for (std::size_t i = 0; i < p_.size(); ++i) {
+#pragma omp parallel for schedule(static)
+        for (long ii = 0; ii < n; ++ii) {
+            const std::size_t i = static_cast<std::size_t>(ii);
+            Vec3 f = p_.mass[i] * gravity_, t = Vec3::Zero();
+            for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                const PairResult& r = results_[incidence_[e] / 2];
+                if (incidence_[e] % 2 == 0) f += r.force_i, t += r.torque_i;
+                else f -= r.force_i, t += r.torque_j;
+            }
+            p_.force[i] = f;
+            p_.torque[i] = t;
+        }
+        double elastic = 0, damping_power = 0;
+        for (const PairResult& r : results_) elastic += r.elastic, damping_power += r.damping_power;
+        wall_elastic_.assign(p_.size(), 0.0);
+        wall_damping_.assign(p_.size(), 0.0);
+        std::string wall_error;
+#pragma omp parallel for schedule(static)
+        for (long ii = 0; ii < n; ++ii) {
+            const std::size_t i = static_cast<std::size_t>(ii);
+            for (std::size_t w = 0; w < walls_.size(); ++w) {
                 const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
-                if (wp.behind)
-                    throw std::runtime_error("particle " + std::to_string(i) + " left the domain through wall " +
-                                             std::to_string(w) + " at step " + std::to_string(steps_));
+                if (wp.behind) {
+#pragma omp critical
+                    wall_error = "particle " + std::to_string(i) + " left the domain through wall " + std::to_string(w) +
+                                 " at step " + std::to_string(steps_);
+                    continue;
+                }
                 if ((p_.position[i] - wp.point).norm() - p_.radius[i] > reach) {
                     wall_state_[w][i] = {};
                     continue;
@@ -171,10 +272,12 @@ private:
                 const ContactForce f = law_.force(c, wall_state_[w][i]);
                 p_.force[i] += f.on_i;
                 p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
-                elastic += law_.elastic_energy(c);
-                damping_power += f.damping_power;
+                wall_elastic_[i] += law_.elastic_energy(c);
+                wall_damping_[i] += f.damping_power;
             }
         }
+        if (!wall_error.empty()) throw std::runtime_error(wall_error);
+        for (std::size_t i = 0; i < p_.size(); ++i) elastic += wall_elastic_[i], damping_power += wall_damping_[i];
         for (std::size_t i = 0; i < p_.size(); ++i)
             for (int k = 0; k < 3; ++k)
                 if (!std::isfinite(p_.force[i][k]))
@@ -191,6 +294,9 @@ private:
     double dt_;
     NeighborList neighbors_;
     std::vector<ListedPair> pairs_;
+    std::vector<PairResult> results_;
+    std::vector<std::uint32_t> incidence_start_, incidence_;
+    std::vector<double> wall_elastic_, wall_damping_;
     std::vector<std::vector<typename Law::State>> wall_state_;
     Energy energy_;
     double time_ = 0;

@@ -2,7 +2,10 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <omp.h>
 #include <random>
+#include <sstream>
 
 #include "bridge/mikami.hpp"
 #include "dem/simulation.hpp"
@@ -123,4 +126,48 @@ TEST_CASE("Bad scenes stop with the particle and the step", "[dem][errors]") {
     CHECK_THROWS_WITH([&] { for (int n = 0; n < 100; ++n) sim.step(); }(), Catch::Matchers::Contains("particle 0 left the domain"));
     CHECK_THROWS_WITH(Particles().add({0, 0, 0}, -1e-3, 2500), Catch::Matchers::Contains("particle radius = -0.001"));
     CHECK_THROWS_AS(Particles().add({NAN, 0, 0}, 1e-3, 2500), InputError);
+}
+
+TEST_CASE("Restart from a checkpoint continues bit for bit", "[dem][restart]") {
+    Material m;
+    m.youngs_modulus = 5e6;
+    m.friction = 0.5;
+    m.rolling_friction = 0.1;
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>;
+    Particles p = random_cloud(120, 0.01, 9, 0.3);
+    const std::vector<Wall> walls{PlaneWall{Vec3(0, 0, -0.002), Vec3::UnitZ()}};
+    Simulation straight(p, Law(m), walls, Vec3(0, 0, -9.81), 2e-6, 0.2e-3);
+    for (int n = 0; n < 4000; ++n) straight.step();
+
+    Simulation first(p, Law(m), walls, Vec3(0, 0, -9.81), 2e-6, 0.2e-3);
+    for (int n = 0; n < 1700; ++n) first.step();
+    std::stringstream checkpoint;
+    first.save(checkpoint);
+    Simulation resumed(Particles{}, Law(m), walls, Vec3(0, 0, -9.81), 2e-6, 0.2e-3);
+    resumed.load(checkpoint);
+    for (int n = 0; n < 2300; ++n) resumed.step();
+
+    REQUIRE(resumed.steps() == straight.steps());
+    const auto& a = straight.particles();
+    const auto& b = resumed.particles();
+    CHECK(std::memcmp(a.position.data(), b.position.data(), a.size() * sizeof(Vec3)) == 0);
+    CHECK(std::memcmp(a.angular_velocity.data(), b.angular_velocity.data(), a.size() * sizeof(Vec3)) == 0);
+    CHECK(resumed.neighbors().builds() == straight.neighbors().builds());
+    std::stringstream garbage("not a checkpoint at all, just text");
+    CHECK_THROWS_WITH(resumed.load(garbage), Catch::Matchers::Contains("not a demscale checkpoint"));
+}
+
+TEST_CASE("Results do not depend on the number of threads", "[dem][threads]") {
+    Material m;
+    m.friction = 0.5;
+    Particles p = random_cloud(150, 0.012, 3, 0.5);
+    auto run = [&](int threads) {
+        omp_set_num_threads(threads);
+        Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin>(m), {}, Vec3::Zero(), 2e-6, 0.2e-3);
+        for (int n = 0; n < 2000; ++n) sim.step();
+        return sim.particles().position;
+    };
+    const auto one = run(1), two = run(2);
+    omp_set_num_threads(omp_get_num_procs());
+    CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(Vec3)) == 0);
 }
