@@ -142,6 +142,8 @@ public:
 
 private:
     static constexpr char checkpoint_magic[16] = "demscale-ckpt-1";
+    // Below this many items a loop runs serially: thread start-up would cost more than the work.
+    static constexpr long parallel_threshold = 512;
     // States are written as bytes: plain fixed-size data only.
     static_assert(std::is_standard_layout_v<typename Law::State>);
 
@@ -215,7 +217,7 @@ private:
     void compute_forces() {
         const double reach = law_.range();
         const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n_pairs > parallel_threshold)
         for (long k = 0; k < n_pairs; ++k) {
             auto& q = pairs_[static_cast<std::size_t>(k)];
             PairResult& out = results_[static_cast<std::size_t>(k)];
@@ -236,7 +238,7 @@ private:
             out.elastic = law_.elastic_energy(c);
             out.damping_power = f.damping_power;
         }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long ii = 0; ii < n; ++ii) {
             const std::size_t i = static_cast<std::size_t>(ii);
             Vec3 f = p_.mass[i] * gravity_, t = Vec3::Zero();
@@ -253,7 +255,7 @@ private:
         wall_elastic_.assign(p_.size(), 0.0);
         wall_damping_.assign(p_.size(), 0.0);
         std::string wall_error;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n * static_cast<long>(walls_.size()) > parallel_threshold)
         for (long ii = 0; ii < n; ++ii) {
             const std::size_t i = static_cast<std::size_t>(ii);
             for (std::size_t w = 0; w < walls_.size(); ++w) {

@@ -160,11 +160,13 @@ TEST_CASE("Restart from a checkpoint continues bit for bit", "[dem][restart]") {
 TEST_CASE("Results do not depend on the number of threads", "[dem][threads]") {
     Material m;
     m.friction = 0.5;
-    Particles p = random_cloud(150, 0.012, 3, 0.5);
+    // Large enough that every loop runs in parallel (more than 512 particles and listed pairs).
+    Particles p = random_cloud(600, 0.02, 3, 0.5);
     auto run = [&](int threads) {
         omp_set_num_threads(threads);
-        Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin>(m), {}, Vec3::Zero(), 2e-6, 0.2e-3);
-        for (int n = 0; n < 2000; ++n) sim.step();
+        Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin>(m), {}, Vec3::Zero(), 2e-6, 0.5e-3);
+        REQUIRE(sim.neighbors().pairs().size() > 512);
+        for (int n = 0; n < 500; ++n) sim.step();
         return sim.particles().position;
     };
     const auto one = run(1), two = run(2);
