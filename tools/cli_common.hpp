@@ -17,6 +17,7 @@ inline const std::string default_config = source_dir + "/data/table1.toml";
 inline const std::string default_plots = source_dir + "/plots";
 inline const std::string default_references = source_dir + "/data/reference";
 inline const std::string default_bridge_table = source_dir + "/data/bridge_table.csv";
+inline const std::string default_scene = source_dir + "/data/scenes/kantro_wet.toml";
 
 struct Command {
     CLI::App* app;
@@ -38,5 +39,6 @@ std::function<void(int, int)> progress_printer(const std::string& what);
 
 std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regress, scaling
 std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
+std::vector<Command> slump_commands(CLI::App& app);       // slump
 
 }  // namespace demscale::cli

@@ -17,6 +17,7 @@ struct ContactPair {
     Vec3 v_tangential;     // v_rel − v_normal n
     Vec3 w_rel;            // ω_i − ω_j (rolling)
     double dt = 0;         // time step, for history updates
+    bool wall = false;     // j is a wall
 };
 
 }  // namespace demscale::dem

@@ -55,6 +55,7 @@ public:
 
     const Particles& particles() const { return p_; }
     Particles& particles() { return p_; }
+    std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
     // Forces for the current state after particles were moved by hand (tests, prescribed motion).
     void refresh_forces() {
@@ -211,6 +212,7 @@ private:
         c.v_tangential = c.v_rel - c.v_normal * c.normal;
         c.w_rel = p_.angular_velocity[i] - wj;
         c.dt = dt_;
+        c.wall = wall;
         return c;
     }
 

@@ -100,6 +100,16 @@ case $case_name in
     done
     head -20 "$work/be/bridge_error.csv" | grep -q '^vhat,theta_deg,x,hhat,fhat_exact,fhat_mikami,fhat_yun_park_2017,fhat_willett' \
       || fail "bridge_error.csv header" ;;
+  slump_small_json)
+    expect 0 '"spread_d95_mm"' -- "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --format json --out "$work/s"
+    for key in particles steps dt_s wall_s final_height_mm slump_mm spread_d95_mm spread_max_mm repose_angle_deg; do
+      grep -q "\"$key\"" "$work/out" || fail "json lacks $key"
+    done
+    for f in slump_profile.csv slump_history.csv slump_final.vtp slump_side.png; do [ -s "$work/s/$f" ] || fail "$f missing"; done ;;
+  slump_bad_scene_exit_2)
+    printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
+    expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
+    [ ! -e "$work/s" ] || fail "a failed run created output" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

@@ -100,7 +100,7 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     Particles p;
     p.add({0, 0, 0}, r, 2200);
     p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
-    Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, gamma}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
+    Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
     CHECK(sim.neighbors().cutoff_gap() >= k.hhat_rupture * r);  // the search reaches the rupture gap
     auto held_at = [&](double hhat) {
         sim.particles().position[1] = Vec3(2 * r + hhat * r, 0, 0);

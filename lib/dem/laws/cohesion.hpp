@@ -4,7 +4,11 @@
 //    a bridge forms when two surfaces touch, pulls with F = force_scale·R·γ·F̂(ĥ) (ĥ = gap/R) while
 //    the gap stays below the rupture distance ĥ_c·R, and is gone until the surfaces touch again.
 //    Equal spheres of radius R (monodisperse wet scenes); coefficients computed once (one exp per force).
+//    Walls use Mikami's sphere–wall coefficients when wet, no bridge when dry.
 #pragma once
+
+#include <algorithm>
+#include <optional>
 
 #include "bridge/mikami.hpp"
 #include "dem/contact_pair.hpp"
@@ -21,23 +25,26 @@ struct CohesionMikamiBridge {
     struct State {
         bool bridged = false;
     };
-    bridge::MikamiCoefficients k;
-    double radius;         // R of the equal spheres, m
-    double gamma;          // surface tension, N/m
+    bridge::MikamiCoefficients k;                   // sphere–sphere
+    double radius;                                  // R of the equal spheres, m
+    double gamma;                                   // surface tension, N/m
+    std::optional<bridge::MikamiCoefficients> wall; // sphere–wall; nullopt: dry walls
 
     // Range beyond contact the neighbour search must cover: the rupture gap, m.
-    double range() const { return k.hhat_rupture * radius; }
+    double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
 
     // Attractive force magnitude (N) along −n on particle i.
     double force(const ContactPair& c, State& s) const {
+        if (c.wall && !wall) return 0.0;
+        const bridge::MikamiCoefficients& law = c.wall ? *wall : k;
         if (c.overlap >= 0) s.bridged = true;  // forms at contact
         if (!s.bridged) return 0.0;
         const double hhat = -c.overlap / radius;
-        if (hhat > k.hhat_rupture) {  // ruptured: gone until the next contact
+        if (hhat > law.hhat_rupture) {  // ruptured: gone until the next contact
             s.bridged = false;
             return 0.0;
         }
-        return k.force_scale * radius * gamma * bridge::mikami_fhat(k, hhat);
+        return law.force_scale * radius * gamma * bridge::mikami_fhat(law, hhat);
     }
 };
 

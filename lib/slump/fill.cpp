@@ -1,0 +1,36 @@
+#include "slump/fill.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace demscale::slump {
+
+dem::Particles fill_cone(const SlumpScene& s) {
+    const double r = s.radius_m, pitch = 2.02 * r;
+    const double layer = pitch * std::sqrt(2.0 / 3.0);  // hcp layer spacing
+    std::mt19937 rng(s.seed);
+    // ±0.5 % per axis: two neighbours at 2.02 R approach by at most 2√3·0.005 R, so never overlap.
+    std::uniform_real_distribution<double> jitter(-0.005 * r, 0.005 * r);
+    dem::Particles p;
+    for (int k = 0;; ++k) {
+        const double z = 1.01 * r + k * layer;
+        if (z + r > s.fill_height_m) break;
+        // Inside radius of the cone at this height, less the sphere and a clearance.
+        const double inner = 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * (z + r) / s.height_m;
+        const double reach = inner - 1.05 * r;
+        if (reach < 0) continue;
+        const double shift_x = (k % 3) * 0.5 * pitch, shift_y = (k % 3) * pitch / (2.0 * std::sqrt(3.0));
+        const int rows = static_cast<int>(std::ceil(reach / (pitch * std::sqrt(3.0) / 2))) + 1;
+        const int cols = static_cast<int>(std::ceil(reach / pitch)) + 1;
+        for (int row = -rows; row <= rows; ++row)
+            for (int col = -cols; col <= cols; ++col) {
+                const double x = col * pitch + (row % 2 != 0 ? 0.5 * pitch : 0.0) + shift_x - 0.5 * pitch;
+                const double y = row * pitch * std::sqrt(3.0) / 2 + shift_y;
+                if (std::hypot(x, y) > reach) continue;
+                p.add({x + jitter(rng), y + jitter(rng), z + jitter(rng)}, r, s.material.density);
+            }
+    }
+    return p;
+}
+
+}  // namespace demscale::slump

@@ -1,0 +1,47 @@
+// The slump protocol: fill the cone, let the fill settle (cone fixed) until at rest or a time limit,
+// lift the cone at constant speed, let the pile spread until at rest or a time limit, measure.
+// The contact law is chosen once from the scene (dry or wet, with or without rolling resistance);
+// each choice is its own compiled engine, so a dry run executes no bridge code.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dem/particles.hpp"
+#include "slump/measurements.hpp"
+#include "slump/slump_scene.hpp"
+
+namespace demscale::slump {
+
+struct SlumpProgress {
+    std::string phase;        // settle, lift, spread
+    double time = 0;          // simulated, s
+    double phase_end = 0;     // latest end of the phase, s
+    std::size_t steps = 0;
+    double particle_steps_per_s = 0;
+    const dem::Particles* particles = nullptr;  // the current state, for snapshots
+};
+
+struct TimePoint {
+    double time, height, spread_max, kinetic_energy;
+};
+
+struct SlumpResult {
+    std::size_t particles = 0, steps = 0;
+    double dt = 0, critical_dt = 0, wall_s = 0;
+    double settle_end = 0, lift_end = 0, end = 0;  // s
+    bool settled = false, came_to_rest = false;
+    double initial_height = 0;
+    PileMeasures final;
+    std::vector<TimePoint> history;  // every 5 ms
+    dem::Particles final_state;
+    double slump() const { return initial_height - final.height; }
+};
+
+// progress is called about every 5 ms of simulated time. Throws InputError for a time step above
+// 0.2 × the Rayleigh time (unless force_dt) and std::runtime_error if the engine stops.
+SlumpResult run_slump(const SlumpScene& scene, const std::function<void(const SlumpProgress&)>& progress = {},
+                      bool force_dt = false);
+
+}  // namespace demscale::slump

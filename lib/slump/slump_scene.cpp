@@ -1,0 +1,81 @@
+#include "slump/slump_scene.hpp"
+
+#include "core/input_error.hpp"
+#include "io/toml_reader.hpp"
+
+namespace demscale::slump {
+
+namespace {
+const std::map<std::string, std::vector<std::string_view>> schema = {
+    {"scene", {"name"}},
+    {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
+    {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed"}},
+    {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance"}},
+    {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
+                "bridge_variant"}},
+    {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "rest_speed_m_per_s", "rest_duration_s", "skin_mm"}},
+};
+void positive(double x, const std::string& f) { require_positive(x, f); }
+auto open_interval(double lo, double hi) {
+    return [lo, hi](double x, const std::string& f) { require_in_open_interval(x, lo, hi, f); };
+}
+}  // namespace
+
+SlumpScene load_slump_scene(const std::string& path) {
+    const io::TomlReader r(path, schema);
+    SlumpScene s;
+    s.source = path;
+    constexpr double mm = 1e-3;
+    if (auto n = r.text("scene.name")) s.name = *n;
+    s.bottom_diameter_m = r.checked("cone.bottom_diameter_mm", 38, positive) * mm;
+    s.top_diameter_m = r.checked("cone.top_diameter_mm", 19, positive) * mm;
+    s.height_m = r.checked("cone.height_mm", 57, positive) * mm;
+    s.lift_speed_m_per_s = r.checked("cone.lift_speed_m_per_s", 0.3, positive);
+    s.lift_height_m = r.checked("cone.lift_height_mm", 65, positive) * mm;
+
+    s.radius_m = r.checked("particles.radius_mm", 1.0, positive) * mm;
+    s.material.density = r.checked("particles.density_kg_per_m3", 2200, positive);
+    s.fill_height_m = r.checked("particles.fill_height_mm", 54, positive) * mm;
+    s.seed = static_cast<unsigned>(r.checked("particles.seed", 1, open_interval(-1, 4294967296.0)));
+
+    s.material.youngs_modulus = r.checked("contact.youngs_modulus_pa", 5e6, positive);
+    s.material.poisson_ratio = r.checked("contact.poisson_ratio", 0.3, open_interval(-1, 0.5));
+    s.material.restitution = r.checked("contact.restitution", 0.5, [](double x, const std::string& f) {
+        if (!(x > 0 && x <= 1)) throw InputError(f, format_number(x), "(0, 1]");
+    });
+    s.material.friction = r.checked("contact.friction", 0.5, open_interval(0, 10));
+    s.material.rolling_friction = r.checked("contact.rolling_friction", 0.1, open_interval(0, 10));
+    s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
+
+    s.wet = r.boolean("liquid.wet").value_or(true);
+    s.wet_walls = r.boolean("liquid.wet_walls").value_or(true);
+    s.liquid.surface_tension_n_per_m = r.checked("liquid.surface_tension_n_per_m", 0.074, positive);
+    if (auto x = r.number("liquid.contact_angle_deg"))
+        r.check("liquid.contact_angle_deg", [&] { s.liquid.contact_angle = ContactAngle(Degrees{*x}); });
+    s.liquid.density_kg_per_m3 = r.checked("liquid.density_kg_per_m3", 1000, positive);
+    s.liquid.moisture_content = r.checked("liquid.moisture_content", 0.045, open_interval(0, 1));
+    if (auto v = r.text("liquid.bridge_variant"))
+        r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
+
+    s.dt_s = r.checked("run.dt_s", 1e-5, positive);
+    s.gravity = r.checked("run.gravity_m_per_s2", 9.81, positive);
+    s.settle_time_s = r.checked("run.settle_time_s", 0.3, positive);
+    s.spread_time_s = r.checked("run.spread_time_s", 0.4, positive);
+    s.rest_speed_m_per_s = r.checked("run.rest_speed_m_per_s", 1e-3, positive);
+    s.rest_duration_s = r.checked("run.rest_duration_s", 0.02, positive);
+    s.skin_m = r.checked("run.skin_mm", 0.3, positive) * mm;
+
+    // Consistency: the particles must fit the cone; the fill must fit under its top.
+    if (!(s.top_diameter_m < s.bottom_diameter_m))
+        throw InputError(r.where("cone.top_diameter_mm", "cone.top_diameter_mm"), format_number(s.top_diameter_m / mm),
+                         "< cone.bottom_diameter_mm (a cone narrowing upwards)");
+    if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))
+        throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
+                         "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
+    if (!(s.fill_height_m <= s.height_m))
+        throw InputError(r.where("particles.fill_height_mm", "particles.fill_height_mm"), format_number(s.fill_height_m / mm),
+                         "<= cone.height_mm = " + format_number(s.height_m / mm));
+    return s;
+}
+
+}  // namespace demscale::slump

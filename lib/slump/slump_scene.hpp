@@ -1,0 +1,44 @@
+// A mini-cone slump test scene (Kantro 1980 cone by default, issue #4's reference scene): the cone,
+// the particles, their contact laws, the liquid and the protocol (fill, settle, lift, spread).
+// Read from TOML (data/scenes/*.toml); units at that edge are mm, degrees, s, SI otherwise.
+#pragma once
+
+#include <string>
+
+#include "bridge/mikami.hpp"
+#include "dem/material.hpp"
+#include "similarity/particle_replacement.hpp"
+
+namespace demscale::slump {
+
+struct SlumpScene {
+    std::string source;
+    std::string name = "kantro-mini-slump";
+    // Cone (open frustum on a flat floor).
+    double bottom_diameter_m = 0.038, top_diameter_m = 0.019, height_m = 0.057;
+    double lift_speed_m_per_s = 0.3, lift_height_m = 0.065;
+    // Particles (monodisperse).
+    double radius_m = 1e-3;
+    double fill_height_m = 0.054;
+    unsigned seed = 1;
+    dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0};
+    bool rolling_resistance = true;  // EPSD (Ai et al. 2011, epsd2)
+    // Liquid bridges.
+    bool wet = true;
+    bool wet_walls = true;
+    similarity::Liquid liquid;
+    bridge::MikamiOptions bridge;
+    // Protocol.
+    double dt_s = 1e-5;
+    double gravity = 9.81;
+    double settle_time_s = 0.3;    // at most; ends earlier once at rest
+    double spread_time_s = 0.4;    // after the lift; ends earlier once at rest
+    double rest_speed_m_per_s = 1e-3;  // "at rest": every particle slower than this…
+    double rest_duration_s = 0.02;     // …for this long
+    double skin_m = 0.3e-3;
+};
+
+// Throws InputError (file, line, key, value, accepted range) for a bad scene.
+SlumpScene load_slump_scene(const std::string& path);
+
+}  // namespace demscale::slump

@@ -1,0 +1,88 @@
+// The slump protocol and its measurements.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/input_error.hpp"
+#include "slump/coarse_grain.hpp"
+#include "slump/fill.hpp"
+#include "slump/measurements.hpp"
+#include "slump/slump_run.hpp"
+
+using namespace demscale;
+using namespace demscale::slump;
+
+namespace {
+SlumpScene small(bool wet) {
+    auto s = load_slump_scene(DEMSCALE_SOURCE_DIR "/data/scenes/small_wet.toml");
+    s.wet = wet;
+    return s;
+}
+}  // namespace
+
+TEST_CASE("Measurements of a constructed cone-shaped pile recover its angle, height and spread", "[slump][measure]") {
+    // Rings of spheres whose tops follow h(rho) = H - rho tan(alpha): the fitted flank gives alpha back
+    // (to the 2R binning), the height is H, and the spread is the base ring's diameter plus 2R.
+    const double r = 1e-3, H = 0.03;
+    for (double alpha_deg : {20.0, 35.0}) {
+        const double t = std::tan(alpha_deg * M_PI / 180), base = H / t;
+        dem::Particles p;
+        for (double rho = 0; rho <= base; rho += 0.5 * r) {
+            const int n = std::max(1, static_cast<int>(2 * M_PI * rho / (2 * r)));
+            for (int k = 0; k < n; ++k) {
+                const double phi = 2 * M_PI * k / n;
+                p.add({rho * std::cos(phi), rho * std::sin(phi), std::max(H - rho * t, r) - r}, r, 2500);
+            }
+        }
+        const auto m = measure_pile(p);
+        INFO("alpha = " << alpha_deg);
+        CHECK(m.height == Approx(H).epsilon(1e-9));
+        CHECK(m.repose_angle_deg == Approx(alpha_deg).margin(1.5));
+        CHECK(m.spread_max == Approx(2 * (base + r)).margin(2 * r));
+    }
+}
+
+TEST_CASE("Filling: equal spheres inside the cone, no overlaps, reproducible from the seed", "[slump][fill]") {
+    const auto s = small(true);
+    const auto a = fill_cone(s), b = fill_cone(s);
+    REQUIRE(a.size() > 300);
+    CHECK(a.position == b.position);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double rho = std::hypot(a.position[i].x(), a.position[i].y()), z = a.position[i].z();
+        const double inner = 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * (z + s.radius_m) / s.height_m;
+        CHECK(rho + s.radius_m < inner);
+        CHECK(z + s.radius_m <= s.fill_height_m + 1e-12);
+        for (std::size_t j = i + 1; j < a.size(); ++j) REQUIRE((a.position[i] - a.position[j]).norm() > 2 * s.radius_m);
+    }
+}
+
+TEST_CASE("Small slump: the wet pile stands taller and spreads less than the dry one; runs repeat exactly",
+          "[slump][run]") {
+    const auto wet = run_slump(small(true)), dry = run_slump(small(false));
+    CHECK(wet.final.height > 1.3 * dry.final.height);
+    CHECK(wet.final.spread_d95 < dry.final.spread_d95);
+    CHECK(wet.slump() > 0);
+    // Replacement conserves mass: every particle kept (none lost through walls).
+    CHECK(wet.final_state.size() == wet.particles);
+    const auto again = run_slump(small(true));
+    CHECK(again.final.height == wet.final.height);
+    CHECK(again.final.spread_d95 == wet.final.spread_d95);
+}
+
+TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][errors]") {
+    auto write = [](const std::string& text) {
+        const auto path = std::filesystem::temp_directory_path() / "demscale_bad_scene.toml";
+        std::ofstream(path) << text;
+        return path.string();
+    };
+    CHECK_THROWS_WITH(load_slump_scene(write("[particles]\nradius_mm = 6\n")),
+                      Catch::Matchers::Contains(":2: particles.radius_mm = 6") && Catch::Matchers::Contains("top opening"));
+    CHECK_THROWS_WITH(load_slump_scene(write("[contact]\nfriction_coefficient = 0.4\n")),
+                      Catch::Matchers::Contains("did you mean contact.friction"));
+    CHECK_THROWS_WITH(load_slump_scene(write("[contact]\nrestitution = 1.5\n")), Catch::Matchers::Contains("(0, 1]"));
+    auto s = small(true);
+    s.dt_s = 1e-3;  // above 0.2 x the Rayleigh time (250 us here)
+    CHECK_THROWS_WITH(run_slump(s), Catch::Matchers::Contains("dt = 0.001 s"));
+    CHECK_THROWS_WITH(coarse_grained(small(true), 3.0, 1.0), Catch::Matchers::Contains("--sf = 3"));
+}

@@ -1,0 +1,105 @@
+// Subcommands of the slump test: slump (one run of a scene, optionally coarse-grained).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "cli_common.hpp"
+#include "core/input_error.hpp"
+#include "io/vtk_writer.hpp"
+#include "slump/coarse_grain.hpp"
+#include "slump/slump_files.hpp"
+
+namespace demscale::cli {
+
+namespace {
+
+struct Options {
+    std::string scene = default_scene;
+    double sf = 1, exponent = 1;
+    std::string format = "text";
+    std::string out_dir = default_plots;
+    double vtk_every = 0;
+    bool force_dt = false, no_png = false;
+};
+
+// Progress on stderr: redrawn in place on a terminal, one line per phase otherwise.
+std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* series, double vtk_every) {
+    const bool tty = ::isatty(STDERR_FILENO);
+    auto last_phase = std::make_shared<std::string>();
+    auto next_frame = std::make_shared<double>(0.0);
+    return [=](const slump::SlumpProgress& p) {
+        if (series && p.particles && p.time >= *next_frame) {
+            series->add(p.time, *p.particles);
+            *next_frame += vtk_every;
+        }
+        if (tty)
+            std::fprintf(stderr, "\r%-7s t = %.3f s (phase ends by %.3f s), %zu steps, %.2e particle-steps/s   ", p.phase.c_str(),
+                         p.time, p.phase_end, p.steps, p.particle_steps_per_s);
+        else if (p.phase != *last_phase)
+            std::fprintf(stderr, "slump: %s from t = %.3f s\n", p.phase.c_str(), p.time);
+        *last_phase = p.phase;
+    };
+}
+
+int run_slump_command(const Options& o) {
+    const auto format = io::parse_format(o.format, "--format");
+    const auto fine = slump::load_slump_scene(o.scene);
+    const auto scene = slump::coarse_grained(fine, o.sf, o.exponent);
+    std::unique_ptr<io::VtkSeries> series;
+    if (o.vtk_every > 0) series = std::make_unique<io::VtkSeries>(std::filesystem::path(o.out_dir) / "slump_series.pvd");
+    const auto r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt);
+    if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "\n");
+    char title[200];
+    std::snprintf(title, sizeof title, "%s, S_f = %g, gamma = gamma0 S_f^%g: %zu spheres, slump %.1f mm, spread d95 %.1f mm",
+                  scene.name.c_str(), o.sf, o.exponent, r.particles, r.slump() * 1e3, r.final.spread_d95 * 1e3);
+    const auto files = slump::write_slump_files(r, title, o.out_dir, "slump", !o.no_png);
+
+    nlohmann::ordered_json j;
+    j["scene"] = display_path(o.scene);
+    j["sf"] = o.sf;
+    j["exponent"] = o.exponent;
+    j["particles"] = r.particles;
+    j["steps"] = r.steps;
+    j["dt_s"] = r.dt;
+    j["critical_dt_s"] = r.critical_dt;
+    j["wall_s"] = r.wall_s;
+    j["particle_steps_per_s"] = double(r.particles) * double(r.steps) / r.wall_s;
+    j["settled"] = r.settled;
+    j["came_to_rest"] = r.came_to_rest;
+    j["initial_height_mm"] = r.initial_height * 1e3;
+    j["final_height_mm"] = r.final.height * 1e3;
+    j["slump_mm"] = r.slump() * 1e3;
+    j["spread_d95_mm"] = r.final.spread_d95 * 1e3;
+    j["spread_max_mm"] = r.final.spread_max * 1e3;
+    j["repose_angle_deg"] = r.final.repose_angle_deg;
+    j["end_time_s"] = r.end;
+    if (format == io::Format::json) {
+        std::cout << j.dump(2) << "\n";
+    } else {
+        for (const auto& [k, v] : j.items()) std::cout << k << ": " << v.dump() << "\n";
+        if (!r.came_to_rest) std::cout << "note: the pile had not come to rest by the end of the spread phase\n";
+    }
+    for (const auto& f : files) std::cerr << "wrote " << f.string() << "\n";
+    return 0;
+}
+
+}  // namespace
+
+std::vector<Command> slump_commands(CLI::App& app) {
+    auto o = std::make_shared<Options>();
+    auto* slump = app.add_subcommand("slump", "one mini-cone slump test (fill, settle, lift, spread), optionally coarse-grained");
+    slump->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
+    slump->add_option("--sf", o->sf, "scale factor S_f: particles of radius S_f R")->capture_default_str();
+    slump->add_option("--exponent", o->exponent, "surface tension gamma S_f^k")->capture_default_str();
+    slump->add_option("--format", o->format, "text | json")->capture_default_str();
+    slump->add_option("--out", o->out_dir, "folder for CSV, VTK and the picture (default: plots/)");
+    slump->add_option("--vtk-every", o->vtk_every, "also write a ParaView series every this many seconds (0: final state only)");
+    slump->add_flag("--force-dt", o->force_dt, "accept a time step above 0.2 x the Rayleigh time");
+    slump->add_flag("--no-png", o->no_png, "no side-view picture");
+    return {{slump, [o] { return run_slump_command(*o); }}};
+}
+
+}  // namespace demscale::cli
