@@ -11,6 +11,8 @@
 #include "core/input_error.hpp"
 #include "io/atomic_file.hpp"
 #include "report/bridge_error_files.hpp"
+#include "slump/slump_run.hpp"
+#include <omp.h>
 
 namespace demscale::cli {
 
@@ -23,7 +25,8 @@ struct Options {
     std::string table = default_bridge_table;
     std::string out = default_bridge_table;
     std::string out_dir = default_plots;
-    bool quick = false, no_png = false;
+    bool quick = false, no_png = false, dem = false;
+    std::string scene = source_dir + "/data/scenes/small_wet.toml";
     double seconds = 0.2;
 };
 
@@ -81,7 +84,31 @@ int run_bridge_error(const Options& o) {
     return 0;
 }
 
+// Cost of each optional contact law on one slump scene: the same run dry and wet, without and with
+// rolling resistance (each its own compiled engine).
+int run_dem_bench(const Options& o) {
+    io::Table t;
+    t.title = "DEM slump run (fill, settle, lift, spread) under each combination of optional laws";
+    t.metadata = {{"scene", display_path(o.scene)}, {"threads", std::to_string(omp_get_max_threads())}};
+    t.columns = {"laws", "particles", "steps", "wall_s", "particle_steps_per_s", "cost_vs_dry_free_rolling"};
+    double base = 0;
+    for (const bool wet : {false, true})
+        for (const bool rolling : {false, true}) {
+            auto s = slump::load_slump_scene(o.scene);
+            s.wet = wet;
+            s.rolling_resistance = rolling;
+            const auto r = slump::run_slump(s);
+            const double rate = double(r.particles) * double(r.steps) / r.wall_s;
+            if (base == 0) base = rate;
+            t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + (rolling ? "+epsd" : ""),
+                              double(r.particles), double(r.steps), r.wall_s, rate, base / rate});
+        }
+    std::cout << io::render(t, io::parse_format(o.format, "--format"));
+    return 0;
+}
+
 int run_bench(const Options& o) {
+    if (o.dem) return run_dem_bench(o);
     io::Table t;
     t.title = "Cost of one bridge force evaluation (median of 5 runs, one pair type: per-pair setup cached)";
     t.metadata = {{"pair", "V^ = 0.05544 (Table 1), theta = 0, gaps spread over [0, h^_rupture]"},
@@ -125,8 +152,10 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     err->add_option("--format", o->format, "text | csv (points) | markdown | json")->capture_default_str();
     err->add_flag("--no-png", o->no_png, "CSV and gnuplot scripts only");
 
-    auto* bench = app.add_subcommand("bench", "benchmark: cost per bridge force evaluation of every model");
+    auto* bench = app.add_subcommand("bench", "benchmarks: cost per bridge force evaluation of every model (--dem: DEM engine)");
     bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(CLI::PositiveNumber);
+    bench->add_flag("--dem", o->dem, "benchmark the DEM engine instead: one slump scene under each law combination");
+    bench->add_option("--scene", o->scene, "scene for --dem (default: data/scenes/small_wet.toml)");
     bench->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
     bench->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
 
