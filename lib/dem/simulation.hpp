@@ -57,6 +57,12 @@ public:
     Particles& particles() { return p_; }
     std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
+    // Takes a wall out of the scene (the slump cone after its lift), with its contact history.
+    void remove_wall(std::size_t index) {
+        walls_.erase(walls_.begin() + static_cast<long>(index));
+        wall_state_.erase(wall_state_.begin() + static_cast<long>(index));
+    }
+
     // Forces for the current state after particles were moved by hand (tests, prescribed motion).
     void refresh_forces() {
         if (neighbors_.needs_rebuild(p_)) rebuild();

@@ -70,6 +70,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         tick("lift", lifted.move_end);
     }
     res.lift_end = sim.time();
+    sim.remove_wall(1);  // lifted clear, then removed: anything clinging to it falls back
     res.came_to_rest = run_until_rest("spread", res.lift_end + s.spread_time_s);
     res.end = sim.time();
     res.steps = sim.steps();

@@ -1,5 +1,6 @@
 // The slump protocol: fill the cone, let the fill settle (cone fixed) until at rest or a time limit,
-// lift the cone at constant speed, let the pile spread until at rest or a time limit, measure.
+// lift the cone at constant speed and remove it, let the pile spread until at rest or a time limit,
+// measure.
 // The contact law is chosen once from the scene (dry or wet, with or without rolling resistance);
 // each choice is its own compiled engine, so a dry run executes no bridge code.
 #pragma once

@@ -48,7 +48,7 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
 
     s.wet = r.boolean("liquid.wet").value_or(true);
-    s.wet_walls = r.boolean("liquid.wet_walls").value_or(true);
+    s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);
     s.liquid.surface_tension_n_per_m = r.checked("liquid.surface_tension_n_per_m", 0.074, positive);
     if (auto x = r.number("liquid.contact_angle_deg"))
         r.check("liquid.contact_angle_deg", [&] { s.liquid.contact_angle = ContactAngle(Degrees{*x}); });

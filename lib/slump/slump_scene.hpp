@@ -25,7 +25,7 @@ struct SlumpScene {
     bool rolling_resistance = true;  // EPSD (Ai et al. 2011, epsd2)
     // Liquid bridges.
     bool wet = true;
-    bool wet_walls = true;
+    bool wet_walls = false;  // Mikami's sphere–wall fit, unverified (2.5× the sphere–plane bound)
     similarity::Liquid liquid;
     bridge::MikamiOptions bridge;
     // Protocol.
