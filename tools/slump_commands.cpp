@@ -4,10 +4,13 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 #include <unistd.h>
 
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
+#include "io/liggghts_export.hpp"
+#include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/slump_files.hpp"
@@ -22,7 +25,9 @@ struct Options {
     std::string format = "text";
     std::string out_dir = default_plots;
     double vtk_every = 0;
-    bool force_dt = false, no_png = false;
+    bool force_dt = false, no_png = false, fixed_time = false;
+    std::string start;  // settled state to lift from
+    std::string dump;   // LIGGGHTS dump to measure
 };
 
 // Progress on stderr: redrawn in place on a terminal, one line per phase otherwise.
@@ -47,10 +52,17 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     const auto fine = slump::load_slump_scene(o.scene);
-    const auto scene = slump::coarse_grained(fine, o.sf, o.exponent);
+    auto scene = slump::coarse_grained(fine, o.sf, o.exponent);
+    if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
     std::unique_ptr<io::VtkSeries> series;
     if (o.vtk_every > 0) series = std::make_unique<io::VtkSeries>(std::filesystem::path(o.out_dir) / "slump_series.pvd");
-    const auto r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt);
+    dem::Particles settled;
+    slump::SlumpPhases phases;
+    if (!o.start.empty()) {
+        settled = io::read_particle_state(o.start);
+        phases.start = &settled;
+    }
+    const auto r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt, phases);
     if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "\n");
     char title[200];
     std::snprintf(title, sizeof title, "%s, S_f = %g, gamma = gamma0 S_f^%g: %zu spheres, slump %.1f mm, spread d95 %.1f mm",
@@ -76,6 +88,7 @@ int run_slump_command(const Options& o) {
     j["spread_max_mm"] = r.final.spread_max * 1e3;
     j["repose_angle_deg"] = r.final.repose_angle_deg;
     j["end_time_s"] = r.end;
+    j["threads"] = omp_get_max_threads();
     if (format == io::Format::json) {
         std::cout << j.dump(2) << "\n";
     } else {
@@ -83,6 +96,36 @@ int run_slump_command(const Options& o) {
         if (!r.came_to_rest) std::cout << "note: the pile had not come to rest by the end of the spread phase\n";
     }
     for (const auto& f : files) std::cerr << "wrote " << f.string() << "\n";
+    return 0;
+}
+
+// Settles the scene's fill in demscale and writes it for LIGGGHTS (and as settled.csv for
+// `demscale slump --start`), so both engines lift and spread the very same particles.
+int run_export_liggghts(const Options& o) {
+    const auto scene = slump::load_slump_scene(o.scene);
+    slump::SlumpPhases phases;
+    phases.settle_only = true;
+    const auto r = slump::run_slump(scene, slump_progress(nullptr, 0), o.force_dt, phases);
+    const std::filesystem::path dir = o.out_dir;
+    io::write_particle_state(dir / "settled.csv", r.final_state);
+    for (const auto& f : io::export_liggghts(scene, r.final_state, dir)) std::cout << "wrote " << f.string() << "\n";
+    std::cout << "wrote " << (dir / "settled.csv").string() << "\n";
+    if (scene.wet) std::cerr << "note: LIGGGHTS-PUBLIC has no Mikami bridge; the deck is dry\n";
+    return 0;
+}
+
+// Measures a pile written by another engine (a LIGGGHTS dump) with demscale's own measurements.
+int run_pile(const Options& o) {
+    const auto scene = slump::load_slump_scene(o.scene);
+    const auto p = io::read_liggghts_dump(o.dump, scene.material.density);
+    const auto m = slump::measure_pile(p);
+    nlohmann::ordered_json j;
+    j["particles"] = p.size();
+    j["final_height_mm"] = m.height * 1e3;
+    j["spread_d95_mm"] = m.spread_d95 * 1e3;
+    j["spread_max_mm"] = m.spread_max * 1e3;
+    j["repose_angle_deg"] = m.repose_angle_deg;
+    std::cout << j.dump(2) << "\n";
     return 0;
 }
 
@@ -99,7 +142,21 @@ std::vector<Command> slump_commands(CLI::App& app) {
     slump->add_option("--vtk-every", o->vtk_every, "also write a ParaView series every this many seconds (0: final state only)");
     slump->add_flag("--force-dt", o->force_dt, "accept a time step above 0.2 x the Rayleigh time");
     slump->add_flag("--no-png", o->no_png, "no side-view picture");
-    return {{slump, [o] { return run_slump_command(*o); }}};
+    slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");
+    slump->add_flag("--fixed-time", o->fixed_time, "run the whole spread time, no early stop at rest (engine comparisons)");
+
+    auto* exp = app.add_subcommand("export", "write a scene for another DEM engine");
+    auto* lig = exp->add_subcommand("liggghts", "settle the fill, then write a LIGGGHTS deck, data file and cone STL");
+    lig->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
+    lig->add_option("--out", o->out_dir, "output folder")->required();
+    exp->require_subcommand(1);
+
+    auto* pile = app.add_subcommand("pile", "measure a pile written by LIGGGHTS (text dump with x y z radius)");
+    pile->add_option("--dump", o->dump, "LIGGGHTS dump file")->required();
+    pile->add_option("--scene", o->scene, "scene the pile came from (for the density)");
+    return {{slump, [o] { return run_slump_command(*o); }},
+            {lig, [o] { return run_export_liggghts(*o); }},
+            {pile, [o] { return run_pile(*o); }}};
 }
 
 }  // namespace demscale::cli

@@ -55,7 +55,8 @@ struct ContactLaw {
         if (c.overlap > 0) {
             out.tangential = tangential.force(c, fn, s.tangential);
             out.on_i += out.tangential;
-            out.rolling_torque = rolling.torque(c, normal.stiffness(c), fn, s.rolling);
+            // Rolling stiffness uses the secant normal stiffness F_el/δ (as LIGGGHTS' epsd2 does).
+            out.rolling_torque = rolling.torque(c, normal.elastic_force(c) / c.overlap, fn, s.rolling);
         } else {  // surfaces apart: tangential and rolling springs are released
             s.tangential = {};
             s.rolling = {};

@@ -20,7 +20,8 @@ double max_speed(const Particles& p) {
 }
 
 template <class Law>
-SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress) {
+SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
+                     SlumpPhases phases) {
     const auto clock_start = std::chrono::steady_clock::now();
     FrustumWall cone;
     cone.bottom_radius = 0.5 * s.bottom_diameter_m;
@@ -59,9 +60,16 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         return false;
     };
 
-    res.settled = run_until_rest("settle", s.settle_time_s);
+    if (!phases.start) res.settled = run_until_rest("settle", s.settle_time_s);
     res.settle_end = sim.time();
     res.initial_height = measure_pile(sim.particles()).height;
+    if (phases.settle_only) {
+        res.steps = sim.steps();
+        res.final = measure_pile(sim.particles());
+        res.final_state = sim.particles();
+        res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+        return res;
+    }
     auto& lifted = std::get<FrustumWall>(sim.walls()[1]);
     lifted.move_start = sim.time();
     lifted.move_end = sim.time() + s.lift_height_m / s.lift_speed_m_per_s;
@@ -94,23 +102,24 @@ CohesionMikamiBridge bridge_for(const SlumpScene& s) {
 
 }  // namespace
 
-SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt) {
+SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
+                      SlumpPhases phases) {
     const double critical = rayleigh_time(s.material, s.radius_m);
     check_time_step(s.dt_s, critical, 0.2, force_dt);
-    Particles particles = fill_cone(s);
+    Particles particles = phases.start ? *phases.start : fill_cone(s);
     SlumpResult res;
     // One explicit switch over the combinations a slump scene can ask for.
     if (s.wet && s.rolling_resistance)
         res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>(s.material, bridge_for(s)),
-                       std::move(particles), progress);
+                       std::move(particles), progress, phases);
     else if (s.wet)
         res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge>(s.material, bridge_for(s)),
-                       std::move(particles), progress);
+                       std::move(particles), progress, phases);
     else if (s.rolling_resistance)
         res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(s.material), std::move(particles),
-                       progress);
+                       progress, phases);
     else
-        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin>(s.material), std::move(particles), progress);
+        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin>(s.material), std::move(particles), progress, phases);
     res.dt = s.dt_s;
     res.critical_dt = critical;
     return res;

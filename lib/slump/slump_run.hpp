@@ -40,9 +40,16 @@ struct SlumpResult {
     double slump() const { return initial_height - final.height; }
 };
 
+// Which part of the protocol to run: all of it; only fill and settle (final_state = the settled
+// fill, e.g. to hand to another engine); or lift and spread from a given settled state.
+struct SlumpPhases {
+    bool settle_only = false;
+    const dem::Particles* start = nullptr;  // settled state: skip fill and settle
+};
+
 // progress is called about every 5 ms of simulated time. Throws InputError for a time step above
 // 0.2 × the Rayleigh time (unless force_dt) and std::runtime_error if the engine stops.
 SlumpResult run_slump(const SlumpScene& scene, const std::function<void(const SlumpProgress&)>& progress = {},
-                      bool force_dt = false);
+                      bool force_dt = false, SlumpPhases phases = {});
 
 }  // namespace demscale::slump

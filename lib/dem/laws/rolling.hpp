@@ -1,7 +1,7 @@
 // Rolling resistance.
 //  RollingNone — free rolling: no state, no code in the force loop.
 //  RollingEpsd — elastic–plastic spring–dashpot of Ai, Chen, Rotter & Ooi (2011), model type C,
-//    without its viscous part (as LIGGGHTS' epsd2): k_r = 2.25 k_n μ_r² R*², incremental torque
+//    without its viscous part (as LIGGGHTS' epsd2): k_r = 2.25 k_n μ_r² R*² (k_n = F_n/δ), incremental torque
 //    ΔM = −k_r ω_roll dt with ω_roll the relative angular velocity in the tangent plane, and the
 //    plastic limit |M| ≤ μ_r R* F_n. Torque on i is M, on j is −M. SI units.
 #pragma once
@@ -27,7 +27,7 @@ struct RollingEpsd {
 
     explicit RollingEpsd(const Material& m) : mu_r(m.rolling_friction) {}
 
-    // normal_stiffness: k_n of the normal law at this overlap (N/m); normal_force: F_n (N).
+    // normal_stiffness: secant k_n = F_el/δ of the normal law at this overlap (N/m); normal_force: F_n (N).
     Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
         const double kr = 2.25 * normal_stiffness * mu_r * mu_r * c.r_eff * c.r_eff;

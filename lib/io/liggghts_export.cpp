@@ -1,0 +1,101 @@
+#include "io/liggghts_export.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+
+namespace demscale::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string data_file(const dem::Particles& p) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "LIGGGHTS data file written by demscale (settled slump fill)\n\n"
+      << p.size() << " atoms\n1 atom types\n\n-0.25 0.25 xlo xhi\n-0.25 0.25 ylo yhi\n-0.001 0.2 zlo zhi\n\nAtoms\n\n";
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double rho = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * std::pow(p.radius[i], 3));
+        s << i + 1 << " 1 " << 2 * p.radius[i] << ' ' << rho << ' ' << p.position[i].x() << ' ' << p.position[i].y() << ' '
+          << p.position[i].z() << '\n';
+    }
+    s << "\nVelocities\n\n";
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto& v = p.velocity[i];
+        const auto& w = p.angular_velocity[i];
+        s << i + 1 << ' ' << v.x() << ' ' << v.y() << ' ' << v.z() << ' ' << w.x() << ' ' << w.y() << ' ' << w.z() << '\n';
+    }
+    return s.str();
+}
+
+// The open frustum as triangles: 96 segments around, one band (its meridian is straight).
+std::string cone_stl(const slump::SlumpScene& sc) {
+    constexpr int n = 96;
+    const double rb = 0.5 * sc.bottom_diameter_m, rt = 0.5 * sc.top_diameter_m, h = sc.height_m;
+    std::ostringstream s;
+    s.precision(12);
+    auto vertex = [&](double r, double phi, double z) {
+        s << "      vertex " << r * std::cos(phi) << ' ' << r * std::sin(phi) << ' ' << z << '\n';
+    };
+    auto facet = [&](double r1, double p1, double z1, double r2, double p2, double z2, double r3, double p3, double z3) {
+        s << "  facet normal 0 0 0\n    outer loop\n";
+        vertex(r1, p1, z1), vertex(r2, p2, z2), vertex(r3, p3, z3);
+        s << "    endloop\n  endfacet\n";
+    };
+    s << "solid cone\n";
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * std::numbers::pi * k / n, b = 2 * std::numbers::pi * (k + 1) / n;
+        facet(rb, a, 0, rb, b, 0, rt, b, h);
+        facet(rb, a, 0, rt, b, h, rt, a, h);
+    }
+    s << "endsolid cone\n";
+    return s.str();
+}
+
+std::string deck(const slump::SlumpScene& sc, std::size_t particles) {
+    const auto& m = sc.material;
+    const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
+    const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
+    const std::string laws = "model hertz tangential history" + std::string(sc.rolling_resistance ? " rolling_friction epsd2" : "");
+    std::ostringstream s;
+    s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
+      << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";
+    if (sc.wet) s << "# NOTE: the demscale scene is wet; LIGGGHTS-PUBLIC has no Mikami bridge, so this deck is DRY.\n";
+    s << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\nunits si\n"
+      << "read_data particles.data\n"
+      << "neighbor " << sc.skin_m << " bin\nneigh_modify delay 0\n"
+      << "fix m1 all property/global youngsModulus peratomtype " << m.youngs_modulus << "\n"
+      << "fix m2 all property/global poissonsRatio peratomtype " << m.poisson_ratio << "\n"
+      << "fix m3 all property/global coefficientRestitution peratomtypepair 1 " << m.restitution << "\n"
+      << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << m.friction << "\n"
+      << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n"
+      << "pair_style gran " << laws << "\npair_coeff * *\n"
+      << "timestep " << sc.dt_s << "\n"
+      << "fix gravi all gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"
+      << "fix cone all mesh/surface file cone.stl type 1\n"
+      << "fix walls all wall/gran " << laws << " mesh n_meshes 1 meshes cone\n"
+      << "fix floor all wall/gran " << laws << " primitive type 1 zplane 0.0\n"
+      << "fix integr all nve/sphere\n"
+      << "thermo " << std::max(1L, (lift_steps + spread_steps) / 20) << "\nthermo_style custom step atoms ke\n"
+      << "# lift the cone " << sc.lift_height_m * 1e3 << " mm at " << sc.lift_speed_m_per_s << " m/s, then remove it\n"
+      << "fix lift all move/mesh mesh cone linear 0.0 0.0 " << sc.lift_speed_m_per_s << "\n"
+      << "run " << lift_steps << "\n"
+      << "unfix lift\nunfix walls\nunfix cone\n"
+      << "dump final all custom " << lift_steps + spread_steps << " final.dump id type x y z radius\n"
+      << "run " << spread_steps << "\n";
+    return s.str();
+}
+
+}  // namespace
+
+std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled, const fs::path& out_dir) {
+    write_file_atomically(out_dir / "particles.data", data_file(settled));
+    write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
+    write_file_atomically(out_dir / "in.slump", deck(scene, settled.size()));
+    return {out_dir / "in.slump", out_dir / "particles.data", out_dir / "cone.stl"};
+}
+
+}  // namespace demscale::io

@@ -1,0 +1,20 @@
+// Export of a slump scene to LIGGGHTS (3.8, Debian's liggghts): the settled particles as a data
+// file (atom_style granular), the cone as an STL mesh, and an input deck with the same laws
+// (hertz, tangential history, rolling_friction epsd2), parameters, time step, lift and spread, ending
+// in a dump of the final pile. LIGGGHTS-PUBLIC has no Mikami bridge: a wet scene is exported dry,
+// and the deck says so.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "dem/particles.hpp"
+#include "slump/slump_scene.hpp"
+
+namespace demscale::io {
+
+// Writes in.slump, particles.data and cone.stl into out_dir; returns their paths.
+std::vector<std::filesystem::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled,
+                                                   const std::filesystem::path& out_dir);
+
+}  // namespace demscale::io
