@@ -44,10 +44,11 @@ struct ContactLaw {
 
     ContactForce force(const ContactPair& c, State& s) const {
         ContactForce out;
-        double fn = 0;
+        double fn = 0, elastic = 0;
         if (c.overlap > 0) {
             const double damping = normal.damping_force(c);
-            fn = normal.elastic_force(c) + damping;
+            elastic = normal.elastic_force(c);
+            fn = elastic + damping;
             out.damping_power = damping * c.v_normal;
         }
         const double attraction = cohesion.force(c, s.cohesion);
@@ -56,7 +57,7 @@ struct ContactLaw {
             out.tangential = tangential.force(c, fn, s.tangential);
             out.on_i += out.tangential;
             // Rolling stiffness uses the secant normal stiffness F_el/δ (as LIGGGHTS' epsd2 does).
-            out.rolling_torque = rolling.torque(c, normal.elastic_force(c) / c.overlap, fn, s.rolling);
+            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling);
         } else {  // surfaces apart: tangential and rolling springs are released
             s.tangential = {};
             s.rolling = {};

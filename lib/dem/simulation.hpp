@@ -73,14 +73,27 @@ public:
     std::size_t steps() const { return steps_; }
     double dt() const { return dt_; }
 
+    // Energies now. The stored elastic energy is summed here, on demand, rather than in every step.
     Energy energy() const {
-        Energy e = energy_;
-        e.kinetic = e.gravitational = 0;
+        Energy e;
+        e.damped = damped_;
         for (std::size_t i = 0; i < p_.size(); ++i) {
             e.kinetic += 0.5 * p_.mass[i] * p_.velocity[i].squaredNorm() +
                          0.5 * p_.inertia[i] * p_.angular_velocity[i].squaredNorm();
             e.gravitational -= p_.mass[i] * gravity_.dot(p_.position[i]);
         }
+        for (const auto& q : pairs_) {
+            const std::size_t i = q.i, j = q.j;
+            if ((p_.position[i] - p_.position[j]).norm() >= p_.radius[i] + p_.radius[j]) continue;
+            e.elastic += law_.elastic_energy(pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j],
+                                                           p_.radius[j], p_.mass[j], false));
+        }
+        for (const Wall& wall : walls_)
+            for (std::size_t i = 0; i < p_.size(); ++i) {
+                const WallPoint wp = closest_wall_point(wall, p_.position[i], time_);
+                if (wp.behind || (p_.position[i] - wp.point).norm() >= p_.radius[i]) continue;
+                e.elastic += law_.elastic_energy(pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true));
+            }
         return e;
     }
 
@@ -97,7 +110,7 @@ public:
         raw(checkpoint_magic, sizeof checkpoint_magic);
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
-        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&energy_, sizeof energy_);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&damped_, sizeof damped_);
         const std::size_t builds = neighbors_.builds();
         raw(&builds, sizeof builds);
         vec(neighbors_.built_at()), vec(pairs_);
@@ -122,7 +135,7 @@ public:
         if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0) throw std::runtime_error("not a demscale checkpoint");
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
-        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&energy_, sizeof energy_);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&damped_, sizeof damped_);
         std::size_t builds = 0;
         raw(&builds, sizeof builds);
         std::vector<Vec3> built_at;
@@ -148,7 +161,7 @@ public:
     }
 
 private:
-    static constexpr char checkpoint_magic[16] = "demscale-ckpt-1";
+    static constexpr char checkpoint_magic[16] = "demscale-ckpt-2";
     // Below this many items a loop runs serially: thread start-up would cost more than the work.
     static constexpr long parallel_threshold = 512;
     // States are written as bytes: plain fixed-size data only.
@@ -160,7 +173,7 @@ private:
     };
     struct PairResult {  // what one pair contributes this step
         Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
-        double elastic = 0, damping_power = 0;
+        double damping_power = 0;
     };
 
     void half_kick() {
@@ -243,7 +256,6 @@ private:
             out.force_i = f.on_i;
             out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
             out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
-            out.elastic = law_.elastic_energy(c);
             out.damping_power = f.damping_power;
         }
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
@@ -258,9 +270,8 @@ private:
             p_.force[i] = f;
             p_.torque[i] = t;
         }
-        double elastic = 0, damping_power = 0;
-        for (const PairResult& r : results_) elastic += r.elastic, damping_power += r.damping_power;
-        wall_elastic_.assign(p_.size(), 0.0);
+        double damping_power = 0;
+        for (const PairResult& r : results_) damping_power += r.damping_power;
         wall_damping_.assign(p_.size(), 0.0);
         std::string wall_error;
 #pragma omp parallel for schedule(static) if (n * static_cast<long>(walls_.size()) > parallel_threshold)
@@ -282,19 +293,17 @@ private:
                 const ContactForce f = law_.force(c, wall_state_[w][i]);
                 p_.force[i] += f.on_i;
                 p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
-                wall_elastic_[i] += law_.elastic_energy(c);
                 wall_damping_[i] += f.damping_power;
             }
         }
         if (!wall_error.empty()) throw std::runtime_error(wall_error);
-        for (std::size_t i = 0; i < p_.size(); ++i) elastic += wall_elastic_[i], damping_power += wall_damping_[i];
+        for (std::size_t i = 0; i < p_.size(); ++i) damping_power += wall_damping_[i];
         for (std::size_t i = 0; i < p_.size(); ++i)
             for (int k = 0; k < 3; ++k)
                 if (!std::isfinite(p_.force[i][k]))
                     throw std::runtime_error("non-finite force on particle " + std::to_string(i) + " at step " +
                                              std::to_string(steps_));
-        energy_.elastic = elastic;
-        energy_.damped -= damping_power * dt_;
+        damped_ -= damping_power * dt_;
     }
 
     Particles p_;
@@ -306,9 +315,9 @@ private:
     std::vector<ListedPair> pairs_;
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
-    std::vector<double> wall_elastic_, wall_damping_;
+    std::vector<double> wall_damping_;
     std::vector<std::vector<typename Law::State>> wall_state_;
-    Energy energy_;
+    double damped_ = 0;  // J dissipated by normal damping so far
     double time_ = 0;
     std::size_t steps_ = 0;
 };

@@ -1,5 +1,7 @@
 #include "slump/slump_scene.hpp"
 
+#include <cmath>
+
 #include "core/input_error.hpp"
 #include "io/toml_reader.hpp"
 
@@ -36,7 +38,9 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.radius_m = r.checked("particles.radius_mm", 1.0, positive) * mm;
     s.material.density = r.checked("particles.density_kg_per_m3", 2200, positive);
     s.fill_height_m = r.checked("particles.fill_height_mm", 54, positive) * mm;
-    s.seed = static_cast<unsigned>(r.checked("particles.seed", 1, open_interval(-1, 4294967296.0)));
+    s.seed = static_cast<unsigned>(r.checked("particles.seed", 1, [](double x, const std::string& f) {
+        if (!(x >= 0 && x < 4294967296.0 && std::floor(x) == x)) throw InputError(f, format_number(x), "an integer in [0, 2^32)");
+    }));
 
     s.material.youngs_modulus = r.checked("contact.youngs_modulus_pa", 5e6, positive);
     s.material.poisson_ratio = r.checked("contact.poisson_ratio", 0.3, open_interval(-1, 0.5));

@@ -81,6 +81,7 @@ TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][er
     CHECK_THROWS_WITH(load_slump_scene(write("[contact]\nfriction_coefficient = 0.4\n")),
                       Catch::Matchers::Contains("did you mean contact.friction"));
     CHECK_THROWS_WITH(load_slump_scene(write("[contact]\nrestitution = 1.5\n")), Catch::Matchers::Contains("(0, 1]"));
+    CHECK_THROWS_WITH(load_slump_scene(write("[particles]\nseed = 1.5\n")), Catch::Matchers::Contains("an integer in [0, 2^32)"));
     auto s = small(true);
     s.dt_s = 1e-3;  // above 0.2 x the Rayleigh time (250 us here)
     CHECK_THROWS_WITH(run_slump(s), Catch::Matchers::Contains("dt = 0.001 s"));

@@ -15,7 +15,6 @@ struct NormalLinear {
 
     explicit NormalLinear(const Material& m) : k(m.linear_stiffness), beta(damping_ratio(m.restitution)) {}
 
-    double stiffness(const ContactPair&) const { return k; }
     double elastic_force(const ContactPair& c) const { return k * c.overlap; }
     double damping_force(const ContactPair& c) const { return 2.0 * beta * std::sqrt(k * c.m_eff) * c.v_normal; }
     double elastic_energy(const ContactPair& c) const { return 0.5 * k * c.overlap * c.overlap; }
