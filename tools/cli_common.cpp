@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <thread>
 #include <unistd.h>
 
 #include "core/input_error.hpp"
@@ -20,7 +21,7 @@ io::TableConfig load_config(const std::string& path) {
     return c;
 }
 
-std::vector<double> parse_exponents(const std::string& text, const std::string& field) {
+std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi) {
     std::vector<double> out;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -28,12 +29,25 @@ std::vector<double> parse_exponents(const std::string& text, const std::string& 
         const std::string item = text.substr(start, end - start);
         char* stop = nullptr;
         const double k = std::strtod(item.c_str(), &stop);
-        if (item.empty() || stop != item.c_str() + item.size() || !(k > -20 && k < 20))
-            throw InputError(field, "\"" + item + "\"", "comma-separated numbers in (-20, 20), e.g. 1,3");
+        if (item.empty() || stop != item.c_str() + item.size() || !(k > lo && k < hi))
+            throw InputError(field, "\"" + item + "\"",
+                             "comma-separated numbers in (" + format_number(lo) + ", " + format_number(hi) + "), e.g. 1,3");
         out.push_back(k);
         start = end + 1;
     }
     return out;
+}
+
+std::vector<double> parse_exponents(const std::string& text, const std::string& field) {
+    return parse_number_list(text, field, -20, 20);
+}
+
+Parallelism parallelism(int jobs, int threads) {
+    if (jobs < 0) throw InputError("--jobs", std::to_string(jobs), ">= 1 (0: one per core)");
+    if (threads < 0) throw InputError("--threads", std::to_string(threads), ">= 1 (0: cores / jobs)");
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int j = jobs > 0 ? jobs : cores;
+    return {j, threads > 0 ? threads : std::max(1, cores / j)};
 }
 
 std::string join_tables(const std::vector<io::Table>& tables, io::Format format) {

@@ -18,6 +18,7 @@ inline const std::string default_plots = source_dir + "/plots";
 inline const std::string default_references = source_dir + "/data/reference";
 inline const std::string default_bridge_table = source_dir + "/data/bridge_table.csv";
 inline const std::string default_scene = source_dir + "/data/scenes/kantro_wet.toml";
+inline const std::string default_cache = source_dir + "/cache";  // finished slump runs, by scene key
 
 struct Command {
     CLI::App* app;
@@ -28,8 +29,17 @@ struct Command {
 io::TableConfig load_config(const std::string& path);
 std::string display_path(const std::string& path);
 
-// "1,3" → {1, 3}; every item a finite number in (−20, 20). Throws InputError naming `field`.
+// "1,3" → {1, 3}; every item a number in (lo, hi). Throws InputError naming `field` and the range.
+std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi);
+// Exponents k: numbers in (−20, 20).
 std::vector<double> parse_exponents(const std::string& text, const std::string& field = "--exponent");
+
+// Slump runs side by side: {jobs, threads per job}. 0 picks from the machine: one job per core,
+// cores / jobs threads each. Throws InputError for negative values.
+struct Parallelism {
+    int jobs, threads_per_job;
+};
+Parallelism parallelism(int jobs, int threads);
 
 // Several tables in one output (a JSON array, or blocks separated by a blank line).
 std::string join_tables(const std::vector<io::Table>& tables, io::Format format);
@@ -39,6 +49,7 @@ std::function<void(int, int)> progress_printer(const std::string& what);
 
 std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regress, scaling
 std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
-std::vector<Command> slump_commands(CLI::App& app);       // slump
+std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts, pile
+std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
 
 }  // namespace demscale::cli

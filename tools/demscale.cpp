@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     auto commands = cli::similarity_commands(app);
     for (auto& c : cli::bridge_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::slump_commands(app)) commands.push_back(std::move(c));
+    for (auto& c : cli::study_commands(app)) commands.push_back(std::move(c));
 
     try {
         app.parse(argc, argv);

@@ -22,6 +22,7 @@ namespace {
 struct Options {
     std::string scene = default_scene;
     double sf = 1, exponent = 1;
+    std::vector<std::string> scaled;
     std::string format = "text";
     std::string out_dir = default_plots;
     double vtk_every = 0;
@@ -52,7 +53,7 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     const auto fine = slump::load_slump_scene(o.scene);
-    auto scene = slump::coarse_grained(fine, o.sf, o.exponent);
+    auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
     std::unique_ptr<io::VtkSeries> series;
     if (o.vtk_every > 0) series = std::make_unique<io::VtkSeries>(std::filesystem::path(o.out_dir) / "slump_series.pvd");
@@ -89,11 +90,15 @@ int run_slump_command(const Options& o) {
     j["repose_angle_deg"] = r.final.repose_angle_deg;
     j["end_time_s"] = r.end;
     j["threads"] = omp_get_max_threads();
+    const auto warnings = slump::geometry_warnings(scene, r.particles);
+    j["warnings"] = warnings;
     if (format == io::Format::json) {
         std::cout << j.dump(2) << "\n";
     } else {
-        for (const auto& [k, v] : j.items()) std::cout << k << ": " << v.dump() << "\n";
+        for (const auto& [k, v] : j.items())
+            if (k != "warnings") std::cout << k << ": " << v.dump() << "\n";
         if (!r.came_to_rest) std::cout << "note: the pile had not come to rest by the end of the spread phase\n";
+        for (const auto& w : warnings) std::cout << "warning: geometry limits similarity: " << w << "\n";
     }
     for (const auto& f : files) std::cerr << "wrote " << f.string() << "\n";
     return 0;
@@ -137,6 +142,8 @@ std::vector<Command> slump_commands(CLI::App& app) {
     slump->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     slump->add_option("--sf", o->sf, "scale factor S_f: particles of radius S_f R")->capture_default_str();
     slump->add_option("--exponent", o->exponent, "surface tension gamma S_f^k")->capture_default_str();
+    slump->add_option("--scale", o->scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity")
+        ->delimiter(',');
     slump->add_option("--format", o->format, "text | json")->capture_default_str();
     slump->add_option("--out", o->out_dir, "folder for CSV, VTK and the picture (default: plots/)");
     slump->add_option("--vtk-every", o->vtk_every, "also write a ParaView series every this many seconds (0: final state only)");

@@ -12,6 +12,16 @@ extern char** environ;
 
 namespace demscale::io {
 
+std::string gnuplot_literal(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '_' || c == '^' || c == '@' || c == '&' || c == '{' || c == '}') out += "\\\\";
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out;
+}
+
 namespace fs = std::filesystem;
 
 namespace {

@@ -3,8 +3,12 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 namespace demscale::io {
+
+// Text for a double-quoted string in an enhanced-mode script: _ ^ @ & { } shown literally.
+std::string gnuplot_literal(const std::string& text);
 
 // True when a gnuplot executable is on PATH.
 bool gnuplot_available();

@@ -6,6 +6,7 @@
 #include "bridge/validity.hpp"
 #include "core/input_error.hpp"
 #include "core/version.hpp"
+#include "similarity/exponent_similarity.hpp"
 #include "similarity/stress_similarity.hpp"
 
 namespace demscale::report {
@@ -119,15 +120,31 @@ io::Table similarity_table(const io::TableConfig& c, const std::vector<double>& 
 
 io::Table similarity_groups_table(const std::vector<double>& exponents) {
     io::Table t;
-    t.title = "Similarity groups of the bridge force under particle replacement (S_L = S_f, S_rho = 1, gamma = gamma0 S_f^k)";
-    t.metadata = {{"reading", "each cell is the exponent e in (group ratio coarse/fine) = S_f^e; 0 means the group is kept"}};
+    t.title = "Similarity groups under particle replacement (S_L = S_f, S_rho = 1, gamma = gamma0 S_f^k)";
+    t.metadata = {{"reading", "each cell is the exponent e in (coarse/fine) = S_f^e; 0 means the group is kept"}};
     t.columns = {"group", "k_keeping_it"};
     for (double k : exponents) t.columns.push_back("exponent_at_k" + exponent_tag(k));
-    for (const auto& g : similarity::bridge_similarity_groups()) {
-        std::vector<io::Cell> row = {g.name, g.keeping_exponent};
-        for (double k : exponents) row.push_back(similarity::group_ratio_exponent(g, k));
+    std::vector<similarity::ExponentSimilarity> s;
+    for (double k : {0.0, 1.0}) s.push_back(similarity::exponent_similarity(k));
+    for (double k : exponents) s.push_back(similarity::exponent_similarity(k));
+    // Every exponent is linear in k: e(k) = e(0) + (e(1) − e(0)) k, so the keeping k is −e(0)/slope.
+    auto keeping = [](double e0, double e1) -> io::Cell {
+        if (e1 == e0) return std::string(e0 == 0 ? "any" : "none");
+        return -e0 / (e1 - e0);
+    };
+    auto add = [&](const std::string& name, auto value_of) {
+        std::vector<io::Cell> row = {name, keeping(value_of(s[0]), value_of(s[1]))};
+        for (std::size_t i = 2; i < s.size(); ++i) row.push_back(value_of(s[i]));
         t.rows.push_back(std::move(row));
-    }
+    };
+    for (std::size_t g = 0; g < s[0].groups.size(); ++g)
+        add(s[0].groups[g].name, [g](const similarity::ExponentSimilarity& x) { return x.groups[g].sf_exponent; });
+    add("implied time scale S_T = S_f^t: t", [](const similarity::ExponentSimilarity& x) { return x.time_exponent; });
+    for (std::size_t h = 0; h < s[0].held.size(); ++h)
+        add(s[0].held[h].what + " held; the implied basis demands S_f^e",
+            [h](const similarity::ExponentSimilarity& x) { return x.held[h].demanded_exponent; });
+    t.notes.push_back("the implied basis: surface tension (rho L^3 T^-2) scaled by S_f^k with S_L = S_f, S_rho = 1 fixes S_T");
+    t.notes.push_back("a held parameter whose demanded exponent is not 0 is a broken similarity condition (partial similarity)");
     return t;
 }
 

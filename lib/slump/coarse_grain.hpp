@@ -1,14 +1,30 @@
 // The coarse-grained scene of the particle-replacement concept (Yun & Park 2017, Eqs. 9–12): the
 // same cone and fill height, particles of radius S_f·R (mass m·S_f³ from the same density, so the
-// liquid per bridge of Eq. 5 scales as S_f³ and V̂ is unchanged), surface tension γ·S_f^k. Every
-// other material parameter keeps its physical value.
+// liquid per bridge of Eq. 5 scales as S_f³ and V̂ is unchanged), surface tension γ·S_f^k. Other
+// parameters keep their physical value unless named in `scaled`: then they take the factor the
+// basis implied by k demands (similarity/exponent_similarity). The time step follows the Rayleigh
+// time, which grows with R̄ (and with 1/√E when E is scaled), so a coarse run takes fewer steps.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "slump/slump_scene.hpp"
 
 namespace demscale::slump {
 
-// Throws InputError for S_f ≤ 0 or a particle too large for the cone (the scene's own check).
-SlumpScene coarse_grained(const SlumpScene& fine, double sf, double exponent);
+struct CoarseGraining {
+    double sf = 1;                    // S_f
+    double exponent = 1;              // k in γ̄ = γ S_f^k
+    std::vector<std::string> scaled;  // of similarity::scalable_parameters()
+};
+
+// Throws InputError for S_f ≤ 0, an unknown scaled key, or particles that cannot pass the cone's
+// top opening (2R̄ ≥ top diameter).
+SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c);
+
+// Where geometry rather than contact scaling limits similarity: fewer than five particle diameters
+// across the cone's top opening, a fill fewer than ten diameters high, or fewer than 200 particles.
+std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t particles);
 
 }  // namespace demscale::slump

@@ -16,6 +16,7 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
                 "bridge_variant"}},
     {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "rest_speed_m_per_s", "rest_duration_s", "skin_mm"}},
+    {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
 };
 void positive(double x, const std::string& f) { require_positive(x, f); }
 auto open_interval(double lo, double hi) {
@@ -68,12 +69,15 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.rest_speed_m_per_s = r.checked("run.rest_speed_m_per_s", 1e-3, positive);
     s.rest_duration_s = r.checked("run.rest_duration_s", 0.02, positive);
     s.skin_m = r.checked("run.skin_mm", 0.3, positive) * mm;
+    s.tolerances.slump = r.checked("check.slump_tolerance", 0.10, positive);
+    s.tolerances.spread = r.checked("check.spread_tolerance", 0.10, positive);
+    s.tolerances.profile = r.checked("check.profile_tolerance", 0.15, positive);
 
     // Consistency: the particles must fit the cone; the fill must fit under its top.
     if (!(s.top_diameter_m < s.bottom_diameter_m))
         throw InputError(r.where("cone.top_diameter_mm", "cone.top_diameter_mm"), format_number(s.top_diameter_m / mm),
                          "< cone.bottom_diameter_mm (a cone narrowing upwards)");
-    if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))
+    if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))  // the fine reference; coarse runs may go further
         throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
     if (!(s.fill_height_m <= s.height_m))

@@ -11,6 +11,13 @@
 
 namespace demscale::slump {
 
+// How far a coarse run may differ from the fine reference (check-exponent's verdict), relative.
+struct Tolerances {
+    double slump = 0.10;    // |s̄ − s| / s
+    double spread = 0.10;   // |d̄95 − d95| / d95
+    double profile = 0.15;  // ‖h̄ − h‖₂ / ‖h‖₂ over the radius
+};
+
 struct SlumpScene {
     std::string source;
     std::string name = "kantro-mini-slump";
@@ -36,6 +43,7 @@ struct SlumpScene {
     double rest_speed_m_per_s = 1e-3;  // "at rest": every particle slower than this…
     double rest_duration_s = 0.02;     // …for this long
     double skin_m = 0.3e-3;
+    Tolerances tolerances;
 };
 
 // Throws InputError (file, line, key, value, accepted range) for a bad scene.

@@ -110,6 +110,20 @@ case $case_name in
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
     [ ! -e "$work/s" ] || fail "a failed run created output" ;;
+  check_exponent_pass_and_fail)
+    small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --cache "$work/cache" --out "$work/c" --no-png)
+    # Loose tolerances pass (exit 0), tight ones fail (exit 1) on the very same runs.
+    expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --tol-slump 10 --tol-spread 10 --tol-profile 10
+    grep -q '3 distinct runs\|2 distinct runs' "$work/out" || fail "study did not say what it runs"
+    expect 1 'verdict: FAIL' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --tol-profile 1e-6
+    grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
+    for f in check_k1.csv check_k1_profiles.csv check_k1_profiles.gp; do [ -s "$work/c/$f" ] || fail "$f missing"; done ;;
+  check_exponent_bad_input_exit_2)
+    expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
+    expect 2 '--scale = viscosity' -- "$demscale" check-exponent --exponent 1 --scale viscosity --out "$work/c"
+    expect 2 '--tol-profile = -1|--tol-profile = -0.5' -- "$demscale" check-exponent --exponent 1 --tol-profile -0.5 --out "$work/c"
+    expect 2 '--sf = 20.*top opening' -- "$demscale" check-exponent --exponent 1 --sf 20 --out "$work/c"
+    [ ! -e "$work/c" ] || fail "a refused study created output" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

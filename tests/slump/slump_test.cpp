@@ -85,5 +85,5 @@ TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][er
     auto s = small(true);
     s.dt_s = 1e-3;  // above 0.2 x the Rayleigh time (250 us here)
     CHECK_THROWS_WITH(run_slump(s), Catch::Matchers::Contains("dt = 0.001 s"));
-    CHECK_THROWS_WITH(coarse_grained(small(true), 3.0, 1.0), Catch::Matchers::Contains("--sf = 3"));
+    CHECK_THROWS_WITH(coarse_grained(small(true), {5.0, 1.0, {}}), Catch::Matchers::Contains("--sf = 5"));
 }

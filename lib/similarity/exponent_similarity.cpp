@@ -1,0 +1,52 @@
+#include "similarity/exponent_similarity.hpp"
+
+#include <cmath>
+
+#include "similarity/quantity_catalogue.hpp"
+#include "similarity/stress_similarity.hpp"
+
+namespace demscale::similarity {
+
+namespace {
+
+Dimension dim(std::string_view key, const std::string& field) { return find_quantity(key, field).dimension; }
+
+// Solve replacement_exponent(surface tension, t) = k for t: linear in t.
+double implied_time_exponent(double k) {
+    const Dimension gamma = dim("surface_tension", "surface_tension");
+    const double at0 = replacement_exponent(gamma, 0.0), slope = replacement_exponent(gamma, 1.0) - at0;
+    const double t = (k - at0) / slope;
+    return t == 0 ? 0.0 : t;  // no "-0" in tables
+}
+
+}  // namespace
+
+bool ExponentGroup::kept() const { return std::abs(sf_exponent) < 1e-12; }
+
+const std::vector<std::string>& scalable_parameters() {
+    static const std::vector<std::string> keys = {"gravity", "youngs_modulus", "velocity"};
+    return keys;
+}
+
+double demanded_exponent(const std::string& key, double k, const std::string& field) {
+    return replacement_exponent(dim(key, field), implied_time_exponent(k));
+}
+
+ExponentSimilarity exponent_similarity(double k) {
+    ExponentSimilarity s;
+    s.exponent = k;
+    s.time_exponent = implied_time_exponent(k);
+    // Ratios of the capillary force to the forces of the algebra's groups, then the Froude numbers:
+    // the lift speed, g and the cone are held, so only the particle-scale one changes (as 1/R̄).
+    for (const auto& g : bridge_similarity_groups()) s.groups.push_back({g.name, group_ratio_exponent(g, k)});
+    s.groups.push_back({"particle Froude number v^2/(g R), v and g held", -1});
+    s.groups.push_back({"pile Froude number v^2/(g H), cone held", 0});
+    const char* what[] = {"gravitational acceleration g", "Young's modulus E", "lift speed"};
+    for (std::size_t i = 0; i < scalable_parameters().size(); ++i) {
+        const auto& key = scalable_parameters()[i];
+        s.held.push_back({key, what[i], demanded_exponent(key, k, key)});
+    }
+    return s;
+}
+
+}  // namespace demscale::similarity

@@ -1,0 +1,89 @@
+#include "slump/run_cache.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
+#include "io/particle_state.hpp"
+
+namespace demscale::slump {
+
+namespace {
+
+constexpr int cache_format = 1;
+
+std::string canonical(const SlumpScene& s) {
+    std::string t;
+    auto add = [&t](const char* name, double v) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%s=%.17g\n", name, v);
+        t += b;
+    };
+    t += std::string("demscale=") + version + "\ncache=" + std::to_string(cache_format) + "\n";
+    add("bottom", s.bottom_diameter_m), add("top", s.top_diameter_m), add("height", s.height_m);
+    add("lift_speed", s.lift_speed_m_per_s), add("lift_height", s.lift_height_m);
+    add("radius", s.radius_m), add("fill", s.fill_height_m), add("seed", s.seed);
+    const auto& m = s.material;
+    add("density", m.density), add("E", m.youngs_modulus), add("nu", m.poisson_ratio), add("e", m.restitution);
+    add("mu", m.friction), add("mu_r", m.rolling_friction), add("k_lin", m.linear_stiffness);
+    add("rolling", s.rolling_resistance), add("wet", s.wet), add("wet_walls", s.wet_walls);
+    add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
+    add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
+    add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
+    add("dt", s.dt_s), add("g", s.gravity), add("settle", s.settle_time_s), add("spread", s.spread_time_s);
+    add("rest_speed", s.rest_speed_m_per_s), add("rest_duration", s.rest_duration_s), add("skin", s.skin_m);
+    return t;
+}
+
+}  // namespace
+
+std::string scene_key(const SlumpScene& s) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (unsigned char c : canonical(s)) h = (h ^ c) * 1099511628211ull;
+    char b[17];
+    std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
+    return b;
+}
+
+void RunCache::store(const std::string& key, const SlumpResult& r, int threads) const {
+    nlohmann::json j;
+    j["format"] = cache_format;
+    j["particles"] = r.particles, j["steps"] = r.steps, j["threads"] = threads;
+    j["dt"] = r.dt, j["critical_dt"] = r.critical_dt, j["wall_s"] = r.wall_s;
+    j["settle_end"] = r.settle_end, j["lift_end"] = r.lift_end, j["end"] = r.end;
+    j["settled"] = r.settled, j["came_to_rest"] = r.came_to_rest, j["initial_height"] = r.initial_height;
+    j["height"] = r.final.height, j["spread_d95"] = r.final.spread_d95, j["spread_max"] = r.final.spread_max;
+    j["repose_angle_deg"] = r.final.repose_angle_deg;
+    for (const auto& p : r.final.profile) j["profile"].push_back({p.radius, p.height});
+    for (const auto& h : r.history) j["history"].push_back({h.time, h.height, h.spread_max, h.kinetic_energy});
+    // The state first: an entry counts only once its JSON exists.
+    io::write_particle_state(dir_ / (key + ".csv"), r.final_state);
+    io::write_file_atomically(dir_ / (key + ".json"), j.dump(1) + "\n");
+}
+
+std::optional<SlumpResult> RunCache::load(const std::string& key) const {
+    std::ifstream in(dir_ / (key + ".json"));
+    if (!in || !std::filesystem::exists(dir_ / (key + ".csv"))) return std::nullopt;
+    try {
+        const auto j = nlohmann::json::parse(in);
+        if (j.at("format").get<int>() != cache_format) return std::nullopt;
+        SlumpResult r;
+        r.particles = j.at("particles"), r.steps = j.at("steps");
+        r.dt = j.at("dt"), r.critical_dt = j.at("critical_dt"), r.wall_s = j.at("wall_s");
+        r.settle_end = j.at("settle_end"), r.lift_end = j.at("lift_end"), r.end = j.at("end");
+        r.settled = j.at("settled"), r.came_to_rest = j.at("came_to_rest"), r.initial_height = j.at("initial_height");
+        r.final.height = j.at("height"), r.final.spread_d95 = j.at("spread_d95"), r.final.spread_max = j.at("spread_max");
+        r.final.repose_angle_deg = j.at("repose_angle_deg");
+        for (const auto& p : j.at("profile")) r.final.profile.push_back({p.at(0), p.at(1)});
+        for (const auto& h : j.at("history")) r.history.push_back({h.at(0), h.at(1), h.at(2), h.at(3)});
+        r.final_state = io::read_particle_state((dir_ / (key + ".csv")).string());
+        return r;
+    } catch (const std::exception&) {
+        return std::nullopt;  // unreadable: run again and overwrite
+    }
+}
+
+}  // namespace demscale::slump

@@ -1,0 +1,188 @@
+// Coarse-graining study pieces: the scaled scene (against hand algebra), the similarity groups of an
+// exponent (hand derivation), run comparison on constructed profiles, the run cache, and replacement
+// conserving mass and liquid.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "bridge/liquid_volume.hpp"
+#include "core/input_error.hpp"
+#include "similarity/exponent_similarity.hpp"
+#include "slump/coarse_grain.hpp"
+#include "slump/comparison.hpp"
+#include "slump/fill.hpp"
+#include "slump/run_cache.hpp"
+
+using namespace demscale;
+using namespace demscale::slump;
+
+namespace {
+SlumpScene kantro() { return load_slump_scene(DEMSCALE_SOURCE_DIR "/data/scenes/kantro_wet.toml"); }
+
+// A result whose profile is h(r) = max(0, H - r) sampled on bins of width w (centres (i + ½) w).
+SlumpResult triangle(double H, double w, double slump, double d95) {
+    SlumpResult r;
+    for (double c = 0.5 * w; c < H + w; c += w) r.final.profile.push_back({c, std::max(0.0, H - c)});
+    r.initial_height = 0.05;
+    r.final.height = 0.05 - slump;
+    r.final.spread_d95 = d95;
+    r.final.spread_max = d95;
+    return r;
+}
+}  // namespace
+
+TEST_CASE("Coarse scene: R, gamma, skin and dt scale as the algebra says; the rest is held", "[slump][coarse]") {
+    const auto fine = kantro();
+    const double sf = 2.74;
+    for (double k : {1.0, 3.0}) {
+        const auto c = coarse_grained(fine, {sf, k, {}});
+        CHECK(c.radius_m == Approx(sf * fine.radius_m).epsilon(1e-14));
+        CHECK(c.liquid.surface_tension_n_per_m == Approx(fine.liquid.surface_tension_n_per_m * std::pow(sf, k)).epsilon(1e-14));
+        // Rayleigh time ∝ R √(ρ/G): at fixed material the step grows by S_f.
+        CHECK(c.dt_s == Approx(sf * fine.dt_s).epsilon(1e-12));
+        CHECK(c.gravity == fine.gravity);
+        CHECK(c.material.youngs_modulus == fine.material.youngs_modulus);
+        CHECK(c.lift_speed_m_per_s == fine.lift_speed_m_per_s);
+        CHECK(c.top_diameter_m == fine.top_diameter_m);
+    }
+    // k = 3 implies S_T = 1 (t = (3 - k)/2 = 0), so the basis demands g × S_f, E × S_f², v × S_f.
+    const auto c = coarse_grained(fine, {sf, 3.0, {"gravity", "youngs_modulus", "velocity"}});
+    CHECK(c.gravity == Approx(fine.gravity * sf).epsilon(1e-12));
+    CHECK(c.material.youngs_modulus == Approx(fine.material.youngs_modulus * sf * sf).epsilon(1e-12));
+    CHECK(c.lift_speed_m_per_s == Approx(fine.lift_speed_m_per_s * sf).epsilon(1e-12));
+    // Rayleigh time ∝ R/√E: S_f / √(S_f²) = 1, the step the basis demands (S_T = 1).
+    CHECK(c.dt_s == Approx(fine.dt_s).epsilon(1e-12));
+    CHECK_THROWS_WITH(coarse_grained(fine, {sf, 1.0, {"viscosity"}}), Catch::Matchers::Contains("--scale = viscosity"));
+    CHECK_THROWS_WITH(coarse_grained(fine, {10.0, 1.0, {}}), Catch::Matchers::Contains("--sf = 10") &&
+                                                                Catch::Matchers::Contains("top opening"));
+    CHECK_THROWS_AS(coarse_grained(fine, {-1.0, 1.0, {}}), InputError);
+}
+
+TEST_CASE("Geometry warnings: opening, height and count thresholds", "[slump][coarse]") {
+    const auto fine = kantro();
+    CHECK(geometry_warnings(fine, 4900).empty());  // 19 mm / 2 mm = 9.5 diameters, 27 high
+    const auto w = geometry_warnings(coarse_grained(fine, {2.74, 1.0, {}}), 150);
+    REQUIRE(w.size() == 3);  // 19 / 5.48 = 3.5 across, 54 / 5.48 = 9.9 high, 150 particles
+    CHECK_THAT(w[0], Catch::Matchers::Contains("3.5 diameters wide"));
+    CHECK_THAT(w[1], Catch::Matchers::Contains("9.9 diameters high"));
+}
+
+TEST_CASE("Similarity groups of an exponent: hand-derived S_f powers", "[similarity][exponent]") {
+    // γ ~ ρ L³ T⁻²; S_ρ = 1, S_L = S_f: S_f^k = S_f^(3 - 2t), t = (3 - k)/2. F = γ R f: S_f^(k+1).
+    // Bond F/(ρ g R³), g held: k + 1 - 3. Stress F/R²: k + 1 - 2. Particle Froude v²/(g R): -1.
+    for (double k : {1.0, 1.5, 2.0, 3.0}) {
+        const auto s = similarity::exponent_similarity(k);
+        INFO("k = " << k);
+        CHECK(s.time_exponent == Approx((3 - k) / 2).margin(1e-14));
+        CHECK(s.groups[0].sf_exponent == Approx(k - 1).margin(1e-14));
+        CHECK(s.groups[1].sf_exponent == Approx(k - 2).margin(1e-14));
+        CHECK(s.groups[5].sf_exponent == Approx(-1).margin(1e-14));
+        // Held g, E, v; the basis demands L/T² → 1 - 2t, ρL²/T² → 2 - 2t, L/T → 1 - t.
+        const double t = (3 - k) / 2;
+        CHECK(s.held[0].demanded_exponent == Approx(1 - 2 * t).margin(1e-14));
+        CHECK(s.held[1].demanded_exponent == Approx(2 - 2 * t).margin(1e-14));
+        CHECK(s.held[2].demanded_exponent == Approx(1 - t).margin(1e-14));
+    }
+    CHECK(similarity::exponent_similarity(1).groups[0].kept());   // k = 1 keeps the stress (Eq. 11)
+    CHECK(similarity::exponent_similarity(2).groups[1].kept());   // k = 2 keeps the Bond number
+    CHECK_FALSE(similarity::exponent_similarity(3).groups[1].kept());
+}
+
+TEST_CASE("Run comparison on constructed profiles: known errors and speed-ups", "[slump][compare]") {
+    const double w = 0.002;
+    const auto fine = triangle(0.02, w, 0.02, 0.1);
+    SECTION("the same pile sampled on coarser bins has almost no profile error") {
+        // Linear interpolation of a linear flank is exact; only the apex bin and the foot differ.
+        const auto coarse = triangle(0.02, 2 * w, 0.02, 0.1);
+        const auto c = compare_runs(fine, coarse);
+        CHECK(c.slump_error == 0);
+        CHECK(c.spread_error == 0);
+        CHECK(c.profile_error < 0.05);
+    }
+    SECTION("a pile lower by a constant factor has that factor as its L2 error") {
+        auto lower = fine;
+        for (auto& p : lower.final.profile) p.height *= 0.8;
+        lower.final.height = 0.05 - 0.025;
+        lower.final.spread_d95 = 0.11;
+        const auto c = compare_runs(fine, lower);
+        CHECK(c.profile_error == Approx(0.2).epsilon(1e-12));
+        CHECK(c.slump_error == Approx(0.25).epsilon(1e-12));  // 25 mm against 20 mm
+        CHECK(c.spread_error == Approx(0.1).epsilon(1e-12));
+        Tolerances t;
+        CHECK_FALSE(c.within(t));
+        t.slump = 0.3, t.spread = 0.2, t.profile = 0.25;
+        CHECK(c.within(t));
+    }
+    SECTION("speed-ups: wall time ratio and particle-step ratio") {
+        auto f = fine, c = fine;
+        f.particles = 4900, f.steps = 100000, f.wall_s = 200;
+        c.particles = 650, c.steps = 50000, c.wall_s = 10;
+        const auto x = compare_runs(f, c);
+        CHECK(x.wall_speedup == Approx(20));
+        CHECK(x.work_speedup == Approx(4900.0 * 100000 / (650.0 * 50000)));
+    }
+    CHECK(profile_height_at(fine.final.profile, 0.0) == Approx(0.019));
+    CHECK(profile_height_at(fine.final.profile, 0.004) == Approx(0.016));
+    CHECK(profile_height_at(fine.final.profile, 1.0) == 0);
+}
+
+TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable entries ignored", "[slump][cache]") {
+    const auto s = kantro();
+    auto t = s;
+    CHECK(scene_key(s) == scene_key(t));
+    t.name = "renamed", t.source = "elsewhere.toml";
+    CHECK(scene_key(s) == scene_key(t));  // the label does not change the physics
+    t.material.rolling_friction *= 1 + 1e-15;
+    CHECK(scene_key(s) != scene_key(t));
+    t = s, t.seed = 2;
+    CHECK(scene_key(s) != scene_key(t));
+
+    const auto dir = std::filesystem::temp_directory_path() / "demscale_cache_test";
+    std::filesystem::remove_all(dir);
+    const RunCache cache(dir);
+    CHECK_FALSE(cache.load("0123456789abcdef"));
+    SlumpResult r = triangle(0.02, 0.002, 0.01, 0.08);
+    r.particles = 2, r.steps = 10, r.wall_s = 1.5, r.came_to_rest = true, r.final.repose_angle_deg = 30;
+    r.history = {{0.0, 0.05, 0.04, 1e-3}, {0.005, 0.049, 0.041, 2e-4}};
+    r.final_state.add({0, 0, 0.001}, 0.001, 2200);
+    r.final_state.add({0.002, 0, 0.001}, 0.001, 2200);
+    cache.store("0123456789abcdef", r, 1);
+    const auto back = cache.load("0123456789abcdef");
+    REQUIRE(back);
+    CHECK(back->slump() == r.slump());
+    CHECK(back->final.profile.size() == r.final.profile.size());
+    CHECK(back->final.profile[3].height == r.final.profile[3].height);
+    CHECK(back->history.size() == 2);
+    CHECK(back->final_state.size() == 2);
+    CHECK(back->came_to_rest);
+    std::ofstream(dir / "0123456789abcdef.json") << "{ truncated";
+    CHECK_FALSE(cache.load("0123456789abcdef"));
+}
+
+TEST_CASE("Replacement conserves mass and liquid: coarse fills of the cone against the fine one", "[slump][coarse][fill]") {
+    // Same cone, same fill height: the bulk mass differs only by how the lattice is cut at the
+    // cone wall and the top (a layer of about one radius, thicker for larger particles). Hand
+    // estimate of that boundary loss for the Kantro cone (surface ≈ 6 000 mm², volume ≈ 36 000 mm³):
+    // about (S_f − 1) R · 6 000 / 36 000, i.e. 7 % at S_f = 1.4 and 16 % at 1.96 relative to S_f = 1.
+    const auto fine = kantro();
+    const auto fill_f = fill_cone(fine);
+    auto mass = [](const dem::Particles& p) {
+        double m = 0;
+        for (double x : p.mass) m += x;
+        return m;
+    };
+    for (double sf : {1.4, 1.96}) {
+        const auto coarse = coarse_grained(fine, {sf, 1.0, {}});
+        const auto fill_c = fill_cone(coarse);
+        const double ratio = mass(fill_c) / mass(fill_f);
+        INFO("S_f = " << sf << ", mass ratio " << ratio << ", particles " << fill_c.size() << " vs " << fill_f.size());
+        CHECK(ratio < 1.0);
+        CHECK(ratio > 1.0 - 0.25 * (sf - 1));  // within the boundary-layer estimate above (+50 % margin)
+        // Liquid per bridge (Eq. 5) follows the mass: V̄ = S_f³ V, so V̂ = V/R³ is unchanged and the
+        // total liquid φ·m/ρ_l follows the same ratio as the mass.
+        const double v_f = bridge::liquid_bridge_volume(fine.liquid.moisture_content, fill_f.mass[0], fine.liquid.density_kg_per_m3);
+        const double v_c = bridge::liquid_bridge_volume(coarse.liquid.moisture_content, fill_c.mass[0], coarse.liquid.density_kg_per_m3);
+        CHECK(v_c / v_f == Approx(sf * sf * sf).epsilon(1e-12));
+    }
+}
