@@ -51,5 +51,6 @@ std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regr
 std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
 std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts, pile
 std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
+std::vector<Command> report_commands(CLI::App& app);      // report
 
 }  // namespace demscale::cli

@@ -124,6 +124,30 @@ case $case_name in
     expect 2 '--tol-profile = -1|--tol-profile = -0.5' -- "$demscale" check-exponent --exponent 1 --tol-profile -0.5 --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" check-exponent --exponent 1 --sf 20 --out "$work/c"
     [ ! -e "$work/c" ] || fail "a refused study created output" ;;
+  report_quick_structure)
+    expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"
+    md="$work/r/report.md" html="$work/r/report.html"
+    for s in 'Inputs' 'Similarity table' 'Curves: Figs. 3 and 4' 'Bridge model accuracy' 'Slump test' 'Caveats'; do
+      grep -q "^## $s\$" "$md" || fail "report.md lacks section $s"
+      grep -q "<h2>$s</h2>" "$html" || fail "report.html lacks section $s"
+    done
+    # Every figure the Markdown links exists; the HTML embeds as many, and fetches nothing.
+    links=$(grep -o '](figures/[^)]*\.png)' "$md" | sed 's/^](//; s/)$//')
+    [ -n "$links" ] || fail "no figures linked"
+    for f in $links; do [ -s "$work/r/$f" ] || fail "linked figure $f missing"; done
+    [ "$(grep -o 'src="data:image/png;base64,' "$html" | wc -l)" -eq "$(echo "$links" | wc -l)" ] || fail "HTML embeds a different number of figures"
+    ! grep -Eq 'src="(http|figures/)' "$html" || fail "HTML refers to outside files"
+    # The numbers are the library's: Table 1 and the slump table as the other commands print them.
+    "$demscale" table --format markdown >"$work/table.md" 2>/dev/null || fail "table failed"
+    sed -n '/^| /p' "$work/table.md" | head -8 >"$work/t1"
+    grep -qFf "$work/t1" "$md" || fail "Table 1 in the report differs from demscale table"
+    [ "$(grep -cFf "$work/t1" "$md")" -ge 7 ] || fail "Table 1 rows missing from the report"
+    "$demscale" sweep --exponents 1,3 --sf 1.4 --scene "$src/data/scenes/small_wet.toml" --cache "$work/cache" \
+      --out "$work/s" --no-png --format markdown >"$work/sweep.md" 2>"$work/sweep.err" || fail "sweep failed"
+    grep -q '0 to run' "$work/sweep.err" || fail "sweep did not reuse the report's runs"
+    grep '^| 1.4 ' "$work/sweep.md" | awk -F'|' 'NF > 10' >"$work/rows"
+    [ "$(wc -l <"$work/rows")" -eq 2 ] || fail "sweep rows: $(cat "$work/rows")"
+    grep -qFf "$work/rows" "$md" || fail "slump rows in the report differ from demscale sweep" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

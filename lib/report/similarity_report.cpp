@@ -1,0 +1,286 @@
+#include "report/similarity_report.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <map>
+#include <optional>
+
+#include "bridge/bridge_model.hpp"
+#include "bridge/liquid_volume.hpp"
+#include "bridge/validity.hpp"
+#include "core/input_error.hpp"
+#include "core/version.hpp"
+#include "io/atomic_file.hpp"
+#include "io/table_config.hpp"
+#include "report/bridge_error.hpp"
+#include "report/bridge_error_files.hpp"
+#include "report/curve_files.hpp"
+#include "report/document.hpp"
+#include "report/similarity_table.hpp"
+#include "report/slump_study_files.hpp"
+#include "report/slump_study_tables.hpp"
+#include "slump/slump_files.hpp"
+#include "slump/study.hpp"
+
+namespace demscale::report {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string pct(double x) { return format_short(100 * x, 3) + " %"; }
+
+io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label) {
+    io::Table t;
+    t.title = "Slump scene (" + label + ")";
+    t.columns = {"parameter", "value", "unit"};
+    auto add = [&](const std::string& name, double value, const std::string& unit) { t.rows.push_back({name, value, unit}); };
+    add("cone bottom / top inner diameter", s.bottom_diameter_m * 1e3, "mm"), t.rows.back()[1] =
+        format_short(s.bottom_diameter_m * 1e3) + " / " + format_short(s.top_diameter_m * 1e3);
+    add("cone height", s.height_m * 1e3, "mm");
+    add("cone lift speed", s.lift_speed_m_per_s, "m/s");
+    add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
+    add("particle density", s.material.density, "kg/m^3");
+    add("fill height", s.fill_height_m * 1e3, "mm");
+    add("Young's modulus E", s.material.youngs_modulus, "Pa");
+    add("Poisson's ratio", s.material.poisson_ratio, "1");
+    add("restitution", s.material.restitution, "1");
+    add("sliding friction", s.material.friction, "1");
+    add("rolling friction (EPSD)", s.rolling_resistance ? s.material.rolling_friction : 0.0, "1");
+    add("surface tension gamma", s.wet ? s.liquid.surface_tension_n_per_m : 0.0, "N/m");
+    add("contact angle theta", s.liquid.contact_angle.degrees(), "deg");
+    add("moisture content (Eq. 5)", s.liquid.moisture_content, "kg/kg");
+    t.rows.push_back({"bridge model", std::string(s.wet ? bridge::to_string(s.bridge.variant) : "none (dry)"), std::string("-")});
+    t.rows.push_back({"bridges to the floor and cone", std::string(s.wet_walls ? "yes" : "no"), std::string("-")});
+    add("time step (fine run)", s.dt_s * 1e6, "us");
+    add("gravity", s.gravity, "m/s^2");
+    add("settle / spread time limits", s.settle_time_s, "s"), t.rows.back()[1] =
+        format_short(s.settle_time_s) + " / " + format_short(s.spread_time_s);
+    add("at rest: every particle slower than", s.rest_speed_m_per_s, "m/s");
+    add("... for", s.rest_duration_s, "s");
+    return t;
+}
+
+// F̂ = F/(2πRγ) of the exact bridge and the regressions at the scene's V̂ along the gap.
+io::Table bridge_at_scene(double vhat, ContactAngle theta) {
+    const auto exact = bridge::make_bridge_model("exact");
+    const std::vector<std::string> names = {"mikami1998", "yun-park-2017"};
+    io::Table t;
+    t.title = "Bridge force at the scene's liquid volume: regressions against the exact Young-Laplace bridge";
+    t.metadata = {{"V^", format_short(vhat)}, {"theta_deg", format_short(theta.degrees())},
+                  {"physical bound", "F^ <= cos(theta) = " + format_short(std::cos(theta.radians()))}};
+    t.columns = {"hhat", "fhat_exact"};
+    for (const auto& n : names) t.columns.push_back("fhat_" + n), t.columns.push_back("error_pct_" + n);
+    const double rupture = exact->hhat_rupture(vhat, theta);
+    for (double f : {0.0, 0.05, 0.1, 0.2, 0.4, 0.6, 0.8, 0.95}) {
+        const double h = f * rupture;
+        const double e = exact->fhat(vhat, theta, h);
+        std::vector<io::Cell> row = {h, e};
+        for (const auto& n : names) {
+            const double m = bridge::make_bridge_model(n)->fhat(vhat, theta, h);
+            row.push_back(m);
+            row.push_back(e > 0 ? 100 * (m - e) / e : 0.0);
+        }
+        t.rows.push_back(std::move(row));
+    }
+    t.notes.push_back("F^ = F/(2 pi R gamma) for every model (Eq. 1 as printed uses 2 pi R gamma; Mikami's own form pi R gamma)");
+    t.notes.push_back("gaps as fractions 0 ... 0.95 of the exact rupture distance h^_c = " + format_short(rupture));
+    return t;
+}
+
+std::string verdict_text(const slump::Study& study, const std::vector<double>& sfs) {
+    std::string v;
+    for (double sf : sfs) {
+        const auto& b = study.best_at(sf);
+        v += "At S_f = " + format_short(sf) + " the exponent k = " + format_short(b.grain.exponent) +
+             " fits the fine pile best (profile error " + pct(b.versus_reference.profile_error) + ", slump error " +
+             pct(b.versus_reference.slump_error) + ", spread error " + pct(b.versus_reference.spread_error) + ", " +
+             format_short(b.versus_reference.work_speedup, 3) + "x fewer particle-steps); " +
+             (b.within_tolerance ? "within" : "outside") + " the tolerances. ";
+    }
+    auto profile_error = [&](double sf, double k) -> std::optional<double> {
+        for (const auto& r : study.runs)
+            if (r.grain.sf == sf && r.grain.exponent == k) return r.versus_reference.profile_error;
+        return std::nullopt;
+    };
+    int compared = 0, k1_better = 0;
+    for (double sf : sfs)
+        if (const auto e1 = profile_error(sf, 1.0), e3 = profile_error(sf, 3.0); e1 && e3) ++compared, k1_better += *e1 < *e3;
+    if (compared > 0)
+        v += "Yun & Park (2017) prefer k = 1 over k = 3 (Fig. 5, judged by eye); here k = 1 has the smaller profile error at " +
+             std::to_string(k1_better) + " of " + std::to_string(compared) + " scale factors.";
+    return v;
+}
+
+}  // namespace
+
+ReportOutcome write_similarity_report(const ReportOptions& o, const std::function<void(const std::string&)>& log) {
+    const auto start = Clock::now();
+    auto say = [&](const std::string& s) {
+        if (log) log(s);
+    };
+    const fs::path figures = o.out_dir / "figures";
+    std::vector<std::pair<std::string, double>> timings;
+    auto timed = [&](const std::string& name, auto&& work) {
+        const auto t0 = Clock::now();
+        say(name + " ...");
+        work();
+        timings.push_back({name, std::chrono::duration<double>(Clock::now() - t0).count()});
+    };
+    auto config = io::load_table_config(o.config_path);
+    config.source = o.config_label;
+    const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
+    const auto scene = slump::load_slump_scene(o.scene_path);
+    Document doc;
+    doc.title = "demscale similarity report: " + scene.name;
+    std::vector<std::string> caveats;
+
+    Section similarity{"Similarity table", {}};
+    timed("similarity table", [&] {
+        similarity.blocks.push_back(Paragraph{"Table 1 of Yun & Park (2017) recomputed from " + o.config_label +
+                                              ": every scaled radius, its mass, liquid volume (Eq. 5), Mikami coefficients "
+                                              "(Eqs. 6-8), contact force and the stress of Eq. 11 for each exponent k."});
+        similarity.blocks.push_back(TableBlock{similarity_table(config, ks)});
+        similarity.blocks.push_back(Paragraph{"Which similarity groups each candidate exponent keeps (exponent 0) or breaks, from the "
+                                              "dimensional algebra of Feng et al. (2009) with S_L = S_f and S_rho = 1:"});
+        similarity.blocks.push_back(TableBlock{similarity_groups_table(ks)});
+    });
+
+    Section curves{"Curves: Figs. 3 and 4", {}};
+    timed("curves", [&] {
+        for (auto fig : {Figure::force, Figure::stress}) {
+            const auto files = write_curve_files(config, fig, ks, figures, true);
+            curves.blocks.push_back(FigureBlock{files.png, fig == Figure::force
+                                                               ? "Fig. 3: dimensionless capillary force against dimensionless gap, every radius"
+                                                               : "Fig. 4: bridge stress of Eq. 11 against dimensionless gap, per exponent k"});
+            io::Table c;
+            c.title = std::string("Collapse of the ") + (fig == Figure::force ? "Fig. 3" : "Fig. 4") + " curves across radii";
+            c.columns = {"variant", "exponent", "max_relative_spread"};
+            for (const auto& x : files.collapse)
+                c.rows.push_back({std::string(bridge::to_string(x.variant)),
+                                  fig == Figure::force ? io::Cell(std::string("-")) : io::Cell(x.exponent), x.max_relative_spread});
+            c.notes.push_back("(max - min)/max over radii at the same gap; 0 means the curves coincide");
+            curves.blocks.push_back(TableBlock{c});
+        }
+    });
+
+    Section bridges{"Bridge model accuracy", {}};
+    timed("bridge models", [&] {
+        const double mass = scene.material.density * 4.0 / 3.0 * M_PI * std::pow(scene.radius_m, 3);
+        const double vhat = bridge::liquid_bridge_volume(scene.liquid.moisture_content, mass, scene.liquid.density_kg_per_m3) /
+                            std::pow(scene.radius_m, 3);
+        bridges.blocks.push_back(Paragraph{"The scene's liquid gives V^ = " + format_short(vhat) +
+                                           " for every S_f (Eq. 5 scales the bridge with the particle mass). The regressions against "
+                                           "the exact Young-Laplace bridge there, and over a grid of V^, theta and gap:"});
+        bridges.blocks.push_back(TableBlock{bridge_at_scene(vhat, scene.liquid.contact_angle)});
+        const auto grid = default_bridge_error_grid(o.quick);
+        const auto study = bridge_error_study(grid, o.bridge_table_path, o.quick ? 4 : 16, o.quick ? 5 : 21, o.quick ? 0.02 : 0.2);
+        write_bridge_error_files(study, figures, true);
+        bridges.blocks.push_back(TableBlock{study.summary});
+        bridges.blocks.push_back(FigureBlock{figures / "bridge_mikami_error.png",
+                                             "Relative error of Mikami (1998) against the exact bridge over V^ and gap, theta = 0"});
+        bridges.blocks.push_back(FigureBlock{figures / "bridge_speed_error.png", "Cost per force evaluation against error, per model"});
+        const auto printed = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::yun_park_2017});
+        const auto published = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::mikami1998});
+        const double bound = 2 * M_PI * scene.radius_m * scene.liquid.surface_tension_n_per_m * std::cos(scene.liquid.contact_angle.radians());
+        const double f_printed = bridge::bridge_force_newton(printed, bridge::mikami_fhat(printed, 0), scene.radius_m,
+                                                             scene.liquid.surface_tension_n_per_m);
+        const double f_published = bridge::bridge_force_newton(published, bridge::mikami_fhat(published, 0), scene.radius_m,
+                                                               scene.liquid.surface_tension_n_per_m);
+        bridges.blocks.push_back(Paragraph{
+            "Printed against published Mikami: at contact, R = " + format_short(scene.radius_m * 1e3) + " mm, the paper's printed form "
+            "(2 pi R gamma, C = 0.042) gives F = " + format_short(f_printed * 1e3) + " mN; Mikami's published form (pi R gamma) gives " +
+            format_short(f_published * 1e3) + " mN; no sphere-sphere bridge can exceed 2 pi R gamma cos(theta) = " +
+            format_short(bound * 1e3) + " mN. The printed form exceeds the bound by " + pct(f_printed / bound - 1) +
+            ", so demscale defaults to the published form (" + std::string(bridge::to_string(scene.bridge.variant)) + " in this scene)."});
+        for (const auto& w : bridge::check_validity(vhat, scene.liquid.contact_angle,
+                                                    bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, scene.bridge)))
+            caveats.push_back("bridge model: " + w.message);
+    });
+
+    Section slump_section{"Slump test", {}};
+    slump::StudyPlan plan;
+    plan.fine = scene;
+    plan.exponents = ks;
+    plan.scale_factors = o.scale_factors;
+    plan.tolerances = scene.tolerances;
+    plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
+    plan.cache_dir = o.cache_dir;
+    timed("slump study", [&] {
+        const auto study = slump::run_study(plan, [&](const std::string& s) { say("slump: " + s); });
+        slump_section.blocks.push_back(Paragraph{
+            "Mini-cone slump test (fill, settle, lift the cone at constant speed, spread until at rest or a time limit). The fine "
+            "reference has " + std::to_string(study.reference.result.particles) + " particles; each coarse run fills the same cone "
+            "with particles of radius S_f R and surface tension gamma S_f^k, everything else held (time step from the Rayleigh time)."});
+        auto side = [&](const slump::StudyRun& r, const std::string& stem, const std::string& what) {
+            const auto title = what + ": " + std::to_string(r.result.particles) + " particles, slump " +
+                               format_short(r.result.slump() * 1e3, 3) + " mm, spread d95 " + format_short(r.result.final.spread_d95 * 1e3, 3) + " mm";
+            slump::write_slump_files(r.result, title, figures, stem, true);
+            slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title});
+        };
+        side(study.reference, "slump_reference", "fine reference (S_f = 1)");
+        for (const auto& r : study.runs)
+            side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
+                 "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent));
+        const auto files = write_study_files(study, o.scene_label, figures, "study", true);
+        slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
+        slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine reference"});
+        if (!files.error_png.empty())
+            slump_section.blocks.push_back(FigureBlock{files.error_png, "Profile and slump errors against the exponent k, per S_f"});
+        slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile error against the particle-step speed-up"});
+        slump_section.blocks.push_back(TableBlock{best_exponent_table(study, o.scale_factors)});
+        slump_section.blocks.push_back(Paragraph{"Verdict. " + verdict_text(study, o.scale_factors)});
+        std::vector<const slump::StudyRun*> all = {&study.reference};
+        for (const auto& r : study.runs) all.push_back(&r);
+        for (const auto* r : all) {
+            const std::string who = r == &study.reference ? "fine reference" : "S_f = " + format_short(r->grain.sf) + ", k = " + format_short(r->grain.exponent);
+            if (!r->result.came_to_rest) caveats.push_back("slump " + who + ": not at rest when the spread time limit ended");
+            for (const auto& w : r->warnings) caveats.push_back("slump " + who + ": geometry limits similarity: " + w);
+            if (r != &study.reference && !r->within_tolerance) caveats.push_back("slump " + who + ": outside the tolerances");
+        }
+    });
+
+    Section inputs{"Inputs", {}};
+    std::time_t now = std::time(nullptr);
+    char date[64];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    inputs.blocks.push_back(BulletList{{"demscale " + std::string(version) + (o.git_revision.empty() ? "" : ", git " + o.git_revision),
+                                        "generated " + std::string(date) + (o.quick ? " (--quick: small scene, coarse grids)" : ""),
+                                        "scale factors S_f: " + [&] {
+                                            std::string s;
+                                            for (double x : o.scale_factors) s += (s.empty() ? "" : ", ") + format_short(x);
+                                            return s;
+                                        }(),
+                                        "candidate exponents k (gamma = gamma0 S_f^k): " + [&] {
+                                            std::string s;
+                                            for (double x : ks) s += (s.empty() ? "" : ", ") + format_short(x);
+                                            return s;
+                                        }(),
+                                        "tolerances: slump " + pct(plan.tolerances.slump) + ", spread " + pct(plan.tolerances.spread) +
+                                            ", profile " + pct(plan.tolerances.profile)}});
+    inputs.blocks.push_back(TableBlock{scene_parameters(scene, o.scene_label)});
+    io::Table time_table;
+    time_table.title = "Wall time of each section";
+    time_table.columns = {"section", "wall_s"};
+    for (const auto& [name, s] : timings) time_table.rows.push_back({name, s});
+    inputs.blocks.push_back(TableBlock{time_table});
+
+    Section caveat_section{"Caveats", {}};
+    if (caveats.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
+    else caveat_section.blocks.push_back(BulletList{caveats});
+    doc.sections = {inputs, similarity, curves, bridges, slump_section, caveat_section};
+
+    ReportOutcome out;
+    out.html = o.out_dir / "report.html";
+    out.markdown = o.out_dir / "report.md";
+    io::write_file_atomically(out.markdown, render_markdown(doc, o.out_dir));
+    io::write_file_atomically(out.html, render_html(doc));
+    out.caveats = caveats;
+    out.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+}
+
+}  // namespace demscale::report

@@ -1,0 +1,37 @@
+// The similarity report (issue #6): one document with the inputs, Table 1 and the similarity
+// groups, Figs. 3 and 4 with their collapse, the bridge models' accuracy and cost, the slump study
+// (pictures, profiles, errors, speed-up, best exponent, verdict) and the caveats. Written as
+// DIR/report.html (self-contained) and DIR/report.md with DIR/figures/ beside it; both appear only
+// once everything is computed (temporary files renamed), so an interrupted run leaves no half report.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace demscale::report {
+
+struct ReportOptions {
+    std::string scene_path, scene_label;    // slump scene (label: as shown to the reader)
+    std::string config_path, config_label;  // Table 1 configuration (data/table1.toml)
+    std::string bridge_table_path;          // tabulated exact bridge (data/bridge_table.csv)
+    std::vector<double> exponents;          // empty: the configuration's
+    std::vector<double> scale_factors = {1.40, 1.96, 2.74, 3.84};
+    bool quick = false;                     // coarse bridge grid, short cost timing
+    std::filesystem::path out_dir;
+    std::optional<std::filesystem::path> cache_dir;
+    int jobs = 1, threads_per_job = 1;
+    std::string git_revision;               // shown in the inputs
+};
+
+struct ReportOutcome {
+    std::filesystem::path html, markdown;
+    std::vector<std::string> caveats;
+    double wall_s = 0;
+};
+
+ReportOutcome write_similarity_report(const ReportOptions& o, const std::function<void(const std::string&)>& log = {});
+
+}  // namespace demscale::report

@@ -1,0 +1,74 @@
+// Subcommand report: the similarity report (HTML and Markdown) for a scene.
+#include <cstdio>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "core/input_error.hpp"
+#include "report/similarity_report.hpp"
+
+namespace demscale::cli {
+
+namespace {
+
+struct Options {
+    std::string scene, config = default_config, exponents, sfs;
+    std::string out_dir = source_dir + "/report";
+    std::string cache = default_cache;
+    bool quick = false, no_cache = false;
+    int jobs = 0, threads = 0;
+};
+
+// The source tree's revision, with "+changes" when the working tree differs from it.
+std::string git_revision() {
+    const std::string cmd = "git -C '" + source_dir + "' describe --always --dirty=+changes 2>/dev/null";
+    std::string out;
+    if (FILE* p = ::popen(cmd.c_str(), "r")) {
+        char b[128];
+        while (std::fgets(b, sizeof b, p)) out += b;
+        ::pclose(p);
+    }
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+    return out;
+}
+
+int run_report(const Options& o) {
+    report::ReportOptions r;
+    r.scene_path = !o.scene.empty() ? o.scene : o.quick ? source_dir + "/data/scenes/small_wet.toml" : default_scene;
+    r.scene_label = display_path(r.scene_path);
+    r.config_path = o.config;
+    r.config_label = display_path(o.config);
+    r.bridge_table_path = default_bridge_table;
+    if (!o.exponents.empty()) r.exponents = parse_exponents(o.exponents, "--exponents");
+    r.scale_factors = parse_number_list(!o.sfs.empty() ? o.sfs : o.quick ? "1.4" : "1.4,1.96,2.74,3.84", "--sf", 0, 100);
+    r.quick = o.quick;
+    r.out_dir = o.out_dir;
+    if (!o.no_cache) r.cache_dir = o.cache;
+    const auto par = parallelism(o.jobs, o.threads);
+    r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
+    r.git_revision = git_revision();
+    const auto out = report::write_similarity_report(r, [](const std::string& s) { std::cerr << "report: " << s << "\n"; });
+    std::cout << "wrote " << out.html.string() << "\nwrote " << out.markdown.string() << " (figures in "
+              << (std::filesystem::path(o.out_dir) / "figures").string() << ")\n"
+              << out.caveats.size() << " caveat(s); " << format_short(out.wall_s, 3) << " s\n";
+    return 0;
+}
+
+}  // namespace
+
+std::vector<Command> report_commands(CLI::App& app) {
+    auto o = std::make_shared<Options>();
+    auto* c = app.add_subcommand("report", "the similarity report: inputs, Table 1, Figs. 3-4, bridge accuracy, slump study, caveats");
+    c->add_option("--scene", o->scene, "slump scene (default: data/scenes/kantro_wet.toml; --quick: small_wet.toml)");
+    c->add_option("--config", o->config, "Table 1 configuration (default: data/table1.toml)");
+    c->add_option("--exponents", o->exponents, "candidate exponents k (default: the configuration's, 1,3)");
+    c->add_option("--sf", o->sfs, "scale factors of the coarse runs (default 1.4,1.96,2.74,3.84; --quick: 1.4)");
+    c->add_option("--out", o->out_dir, "folder for report.html, report.md and figures/ (default: report/)");
+    c->add_flag("--quick", o->quick, "small scene, coarse grids: the whole report in under a minute");
+    c->add_option("--cache", o->cache, "folder of finished slump runs, reused by scene key (default: cache/)");
+    c->add_flag("--no-cache", o->no_cache, "run every slump; read and write no cache");
+    c->add_option("--jobs", o->jobs, "slump runs side by side (default: one per core)");
+    c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
+    return {{c, [o] { return run_report(*o); }}};
+}
+
+}  // namespace demscale::cli
