@@ -1,10 +1,12 @@
 // demscale — command-line front end. Parses arguments, calls lib/, prints. No physics here.
-// Exit codes: 0 success, 1 regression drift, 2 bad input, 3 runtime failure (I/O, gnuplot, solver).
+// Exit codes: 0 success, 1 regression drift, 2 bad input, 3 runtime failure (I/O, gnuplot, solver),
+// 130 interrupted by SIGINT/SIGTERM (state checkpointed where the command supports resuming).
 #include <iostream>
 #include <stdexcept>
 
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "core/version.hpp"
 
 int main(int argc, char** argv) {
@@ -26,9 +28,13 @@ int main(int argc, char** argv) {
         std::cerr << "demscale: error: " << e.what() << "\n";
         return 2;
     }
+    install_interrupt_handlers();
     try {
         for (auto& c : commands)
             if (*c.app) return c.run();
+    } catch (const Interrupted& e) {
+        std::cerr << "demscale: " << e.what() << (e.checkpoint().empty() ? "" : "; checkpoint: " + e.checkpoint()) << "\n";
+        return 130;
     } catch (const InputError& e) {
         std::cerr << "demscale: error: " << e.what() << "\n";
         return 2;

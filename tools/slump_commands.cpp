@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "io/liggghts_export.hpp"
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
@@ -28,6 +29,7 @@ struct Options {
     double vtk_every = 0;
     bool force_dt = false, no_png = false, fixed_time = false;
     std::string start;  // settled state to lift from
+    std::string resume; // checkpoint of an interrupted run
     std::string dump;   // LIGGGHTS dump to measure
 };
 
@@ -63,7 +65,15 @@ int run_slump_command(const Options& o) {
         settled = io::read_particle_state(o.start);
         phases.start = &settled;
     }
-    const auto r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt, phases);
+    phases.checkpoint = std::filesystem::path(o.out_dir) / "slump.ckpt";
+    phases.resume = o.resume;
+    slump::SlumpResult r;
+    try {
+        r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt, phases);
+    } catch (const Interrupted& e) {
+        throw Interrupted(std::string(e.what()) + "; continue with the same command and --resume " + e.checkpoint(), e.checkpoint());
+    }
+    if (!o.resume.empty() && std::filesystem::path(o.resume) == phases.checkpoint) std::filesystem::remove(phases.checkpoint);
     if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "\n");
     char title[200];
     std::snprintf(title, sizeof title, "%s, S_f = %g, gamma = gamma0 S_f^%g: %zu spheres, slump %.1f mm, spread d95 %.1f mm",
@@ -150,6 +160,7 @@ std::vector<Command> slump_commands(CLI::App& app) {
     slump->add_flag("--force-dt", o->force_dt, "accept a time step above 0.2 x the Rayleigh time");
     slump->add_flag("--no-png", o->no_png, "no side-view picture");
     slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");
+    slump->add_option("--resume", o->resume, "continue an interrupted run from its checkpoint (OUT/slump.ckpt)");
     slump->add_flag("--fixed-time", o->fixed_time, "run the whole spread time, no early stop at rest (engine comparisons)");
 
     auto* exp = app.add_subcommand("export", "write a scene for another DEM engine");

@@ -22,6 +22,7 @@ struct Options {
     std::vector<std::string> scaled;
     double tol_slump = -1, tol_spread = -1, tol_profile = -1;  // < 0: the scene's
     int jobs = 0, threads = 0;                                 // 0: from the machine
+    int replicas = 1;
     std::string cache = default_cache;
     bool no_cache = false, no_png = false, force_dt = false;
     std::string out_dir = default_plots;
@@ -48,6 +49,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     plan.jobs = par.jobs, plan.threads_per_job = par.threads_per_job;
     if (!o.no_cache) plan.cache_dir = o.cache;
     plan.force_dt = o.force_dt;
+    plan.replicas = o.replicas;
     return plan;
 }
 
@@ -80,6 +82,7 @@ void add_common(CLI::App* c, Options& o) {
     c->add_option("--tol-slump", o.tol_slump, "relative slump tolerance (default: the scene's [check])");
     c->add_option("--tol-spread", o.tol_spread, "relative spread-d95 tolerance (default: the scene's [check])");
     c->add_option("--tol-profile", o.tol_profile, "relative L2 profile tolerance (default: the scene's [check])");
+    c->add_option("--replicas", o.replicas, "fine runs with other seeds, for the fine-vs-fine noise floor")->capture_default_str();
     c->add_option("--jobs", o.jobs, "runs side by side (default: one per core)");
     c->add_option("--threads", o.threads, "OpenMP threads per run (default: cores / jobs)");
     c->add_option("--cache", o.cache, "folder of finished runs, reused by scene key (default: cache/)");

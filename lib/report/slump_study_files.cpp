@@ -28,14 +28,17 @@ std::string header(const std::string& stem, const std::string& what, const std::
            "set key top right box opaque\n# data: " + stem + "\n";
 }
 
-// gnuplot: y where the run's (sf, exponent) match, else NaN.
-std::string pick(double sf, double k, const std::string& y) {
-    return "(abs(column(\"sf\") - " + format_number(sf) + ") < 1e-9 && abs(column(\"exponent\") - " + format_number(k) +
-           ") < 1e-9 ? " + y + " : NaN)";
+std::string run_label(const slump::StudyRun& r) {
+    return r.grain.sf == 1 ? "seed" + std::to_string(r.scene.seed) : "sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent);
 }
 
-std::string profiles_script(const std::string& stem, const std::vector<double>& ks, const std::vector<double>& sfs,
-                            const std::string& label) {
+// gnuplot: y where the profile row belongs to run `label`, else NaN.
+std::string pick(const std::string& label, const std::string& y) {
+    return "(strcol(\"run\") eq \"" + label + "\" ? " + y + " : NaN)";
+}
+
+std::string profiles_script(const std::string& stem, const slump::Study& study, const std::vector<double>& ks,
+                            const std::vector<double>& sfs, const std::string& label) {
     const std::string csv = stem + "_profiles.csv";
     std::ostringstream s;
     s << header(csv, "final radial height profiles of the coarse runs over the fine reference", stem + "_profiles.png",
@@ -46,12 +49,16 @@ std::string profiles_script(const std::string& stem, const std::vector<double>& 
       << "set xlabel 'radius from the pile axis (mm)'\nset ylabel 'height h(r) (mm)'\nset yrange [0:*]\nset xrange [0:*]\n";
     for (double k : ks) {
         s << "set title 'γ̄ = γ S_f^{" << format_number(k) << "}'\nplot \\\n"
-          << "  '" << csv << "' using " << pick(1, 0, "column(\"radius_mm\")") << ":\"height_mm\" with lines lw 3 lc rgb 'black' "
-          << "title 'fine reference (S_f = 1)'";
+          << "  '" << csv << "' using " << pick(run_label(study.reference), "column(\"radius_mm\")")
+          << ":\"height_mm\" with lines lw 3 lc rgb 'black' title 'fine reference (S_f = 1)'";
+        for (const auto& r : study.replicas)
+            s << ", \\\n  '" << csv << "' using " << pick(run_label(r), "column(\"radius_mm\")")
+              << ":\"height_mm\" with lines lw 1.5 dt 2 lc rgb '#777777' title " << (&r == &study.replicas.front() ? "'fine, other seeds'" : "''");
         int i = 0;
         for (double sf : sfs) {
             ++i;
-            s << ", \\\n  '" << csv << "' using " << pick(sf, k, "column(\"radius_mm\")") << ":\"height_mm\" with linespoints lw 2 lc "
+            s << ", \\\n  '" << csv << "' using " << pick("sf" + format_short(sf) + "_k" + format_short(k), "column(\"radius_mm\")")
+              << ":\"height_mm\" with linespoints lw 2 lc "
               << i << " pt " << i + 4 << " ps 0.8 title 'S_f = " << format_short(sf) << "'";
         }
         s << "\n";
@@ -115,21 +122,24 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
         io::write_file_atomically(out_dir / name, text);
         f.written.push_back(out_dir / name);
     };
-    // The CSV the figures read has a numeric exponent column: the reference row is left out of it.
-    // Rows by S_f, then k, so that each S_f's line in the error plot is drawn unbroken.
+    // The CSV the figures read has a numeric exponent column: the fine rows (reference, seeds) are
+    // left out of it. Rows by S_f, then k, so that each S_f's line in the error plot is unbroken.
     io::Table runs = study_table(study, scene_label);
-    runs.rows.erase(runs.rows.begin());
+    std::erase_if(runs.rows, [](const auto& row) { return !std::holds_alternative<double>(row[1]); });
     std::stable_sort(runs.rows.begin(), runs.rows.end(), [](const auto& a, const auto& b) {
         return std::tie(std::get<double>(a[0]), std::get<double>(a[1])) < std::tie(std::get<double>(b[0]), std::get<double>(b[1]));
     });
     write(stem + ".csv", io::render(runs, io::Format::csv));
 
     io::Table profiles;
-    profiles.title = "Final radial height profiles (" + scene_label + "); the reference has sf = 1, exponent = 0";
-    profiles.columns = {"sf", "exponent", "radius_mm", "height_mm"};
-    for (const auto& q : study.reference.result.final.profile) profiles.rows.push_back({1.0, 0.0, q.radius * 1e3, q.height * 1e3});
-    for (const auto& r : study.runs)
-        for (const auto& q : r.result.final.profile) profiles.rows.push_back({r.grain.sf, r.grain.exponent, q.radius * 1e3, q.height * 1e3});
+    profiles.title = "Final radial height profiles (" + scene_label + "); run: seedN for fine runs, sfS_kK for coarse ones";
+    profiles.columns = {"run", "sf", "exponent", "radius_mm", "height_mm"};
+    std::vector<const slump::StudyRun*> all = {&study.reference};
+    for (const auto& r : study.replicas) all.push_back(&r);
+    for (const auto& r : study.runs) all.push_back(&r);
+    for (const auto* r : all)
+        for (const auto& q : r->result.final.profile)
+            profiles.rows.push_back({run_label(*r), r->grain.sf, r->grain.exponent, q.radius * 1e3, q.height * 1e3});
     write(stem + "_profiles.csv", io::render(profiles, io::Format::csv));
 
     std::vector<double> ks, sfs;
@@ -142,7 +152,7 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
         io::render_gnuplot(out_dir / (name + ".gp"), png);
         f.written.push_back(png);
     };
-    figure(stem + "_profiles", profiles_script(stem, ks, sfs, label), f.profiles_png);
+    figure(stem + "_profiles", profiles_script(stem, study, ks, sfs, label), f.profiles_png);
     if (ks.size() > 1) figure(stem + "_error_vs_k", error_script(stem, sfs, label), f.error_png);
         double lo = 1e300, hi = 0;
     for (const auto& r : study.runs)

@@ -1,11 +1,19 @@
 #include "slump/slump_run.hpp"
 
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
 
 #include "bridge/liquid_volume.hpp"
+#include "core/interrupt.hpp"
+#include "io/atomic_file.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "slump/fill.hpp"
+#include "slump/run_cache.hpp"
 
 namespace demscale::slump {
 
@@ -19,9 +27,20 @@ double max_speed(const Particles& p) {
     return v;
 }
 
+// Where the protocol stands: with the engine's own checkpoint, all a resumed run needs.
+struct ProtocolState {
+    int phase = 0;            // 0 settle, 1 lift, 2 spread
+    double still_since = -1;  // s; −1 while some particle moves
+    double lift_start = 0, lift_end = 0;
+    double wall_s = 0;        // wall time spent before this process
+    std::uint8_t settled = 0;
+    double settle_end = 0, initial_height = 0, lifted_at = 0;
+};
+constexpr char slump_checkpoint_magic[16] = "demscale-slump1";
+
 template <class Law>
 SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
-                     SlumpPhases phases) {
+                     const SlumpPhases& phases) {
     const auto clock_start = std::chrono::steady_clock::now();
     FrustumWall cone;
     cone.bottom_radius = 0.5 * s.bottom_diameter_m;
@@ -31,6 +50,28 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     SlumpResult res;
     res.particles = particles.size();
     Simulation<Law> sim(std::move(particles), std::move(law), {PlaneWall{}, cone}, Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
+    ProtocolState st;
+    const std::string key = scene_key(s);
+    auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
+    if (!phases.resume.empty()) {
+        std::ifstream in(phases.resume, std::ios::binary);
+        const std::string accepted = "a checkpoint an interrupted run of this scene wrote (scene key " + key + ")";
+        char magic[sizeof slump_checkpoint_magic] = {}, stored_key[16] = {};
+        in.read(magic, sizeof magic), in.read(stored_key, sizeof stored_key);
+        if (!in || std::memcmp(magic, slump_checkpoint_magic, sizeof magic) != 0 || std::string(stored_key, 16) != key)
+            throw InputError("--resume", phases.resume.string(), accepted);
+        std::uint64_t n = 0;
+        in.read(reinterpret_cast<char*>(&st), sizeof st), in.read(reinterpret_cast<char*>(&n), sizeof n);
+        if (!in || n > (1ULL << 32)) throw InputError("--resume", phases.resume.string(), accepted);
+        res.history.resize(n);
+        in.read(reinterpret_cast<char*>(res.history.data()), static_cast<std::streamsize>(n * sizeof(TimePoint)));
+        if (st.phase >= 1) schedule_lift();
+        if (st.phase >= 2) sim.remove_wall(1);
+        sim.load(in);
+    } else if (phases.start) {
+        st.phase = 1;
+    }
+    auto wall_time = [&] { return st.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
     const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
     auto tick = [&](const std::string& phase, double end) {
         if (sim.steps() % report_every != 0) return;
@@ -40,51 +81,77 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
             top = std::max(top, p.position[i].z() + p.radius[i]), spread = std::max(spread, std::hypot(p.position[i].x(), p.position[i].y()));
         res.history.push_back({sim.time(), top, 2 * (spread + s.radius_m), sim.energy().kinetic});
         if (progress) {
-            const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+            const double wall = wall_time();
             progress({phase, sim.time(), end, sim.steps(), wall > 0 ? double(res.particles * sim.steps()) / wall : 0, &p});
         }
     };
-    // Runs until every particle has been slower than rest_speed for rest_duration, or until `end`.
+    // Called between steps when SIGINT/SIGTERM arrived: the state after the last whole step.
+    auto stop_here = [&] {
+        char where[120];
+        std::snprintf(where, sizeof where, "interrupted at t = %.4f s (step %zu)", sim.time(), sim.steps());
+        if (phases.checkpoint.empty()) throw Interrupted(where, "");
+        st.wall_s = wall_time();
+        std::ostringstream out(std::ios::binary);
+        const std::uint64_t n = res.history.size();
+        out.write(slump_checkpoint_magic, sizeof slump_checkpoint_magic);
+        out.write(key.data(), 16);
+        out.write(reinterpret_cast<const char*>(&st), sizeof st);
+        out.write(reinterpret_cast<const char*>(&n), sizeof n);
+        out.write(reinterpret_cast<const char*>(res.history.data()), static_cast<std::streamsize>(n * sizeof(TimePoint)));
+        sim.save(out);
+        io::write_file_atomically(phases.checkpoint, out.str());
+        throw Interrupted(where, phases.checkpoint.string());
+    };
+    // Steps until every particle has been slower than rest_speed for rest_duration, or until `end`.
     auto run_until_rest = [&](const std::string& phase, double end) {
-        double still_since = -1;
         while (sim.time() < end) {
+            if (interrupt_requested()) stop_here();
             sim.step();
             tick(phase, end);
             if (max_speed(sim.particles()) < s.rest_speed_m_per_s) {
-                if (still_since < 0) still_since = sim.time();
-                if (sim.time() - still_since >= s.rest_duration_s) return true;
+                if (st.still_since < 0) st.still_since = sim.time();
+                if (sim.time() - st.still_since >= s.rest_duration_s) return true;
             } else {
-                still_since = -1;
+                st.still_since = -1;
             }
         }
         return false;
     };
 
-    if (!phases.start) res.settled = run_until_rest("settle", s.settle_time_s);
-    res.settle_end = sim.time();
-    res.initial_height = measure_pile(sim.particles()).height;
-    if (phases.settle_only) {
-        res.steps = sim.steps();
-        res.final = measure_pile(sim.particles());
-        res.final_state = sim.particles();
-        res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
-        return res;
+    if (st.phase == 0) st.settled = run_until_rest("settle", s.settle_time_s);
+    if (st.phase == 0 || (phases.start && phases.resume.empty())) {
+        st.settle_end = sim.time();
+        st.initial_height = measure_pile(sim.particles()).height;
+        if (phases.settle_only) {
+            res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
+            res.steps = sim.steps();
+            res.final = measure_pile(sim.particles());
+            res.final_state = sim.particles();
+            res.wall_s = wall_time();
+            return res;
+        }
+        st.phase = 1, st.still_since = -1;
+        st.lift_start = sim.time();
+        st.lift_end = sim.time() + s.lift_height_m / s.lift_speed_m_per_s;
+        schedule_lift();
     }
-    auto& lifted = std::get<FrustumWall>(sim.walls()[1]);
-    lifted.move_start = sim.time();
-    lifted.move_end = sim.time() + s.lift_height_m / s.lift_speed_m_per_s;
-    while (sim.time() < lifted.move_end) {
-        sim.step();
-        tick("lift", lifted.move_end);
+    if (st.phase == 1) {
+        while (sim.time() < st.lift_end) {
+            if (interrupt_requested()) stop_here();
+            sim.step();
+            tick("lift", st.lift_end);
+        }
+        st.lifted_at = sim.time();
+        sim.remove_wall(1);  // lifted clear, then removed: anything clinging to it falls back
+        st.phase = 2, st.still_since = -1;
     }
-    res.lift_end = sim.time();
-    sim.remove_wall(1);  // lifted clear, then removed: anything clinging to it falls back
-    res.came_to_rest = run_until_rest("spread", res.lift_end + s.spread_time_s);
+    res.came_to_rest = run_until_rest("spread", st.lifted_at + s.spread_time_s);
+    res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height, res.lift_end = st.lifted_at;
     res.end = sim.time();
     res.steps = sim.steps();
     res.final = measure_pile(sim.particles());
     res.final_state = sim.particles();
-    res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+    res.wall_s = wall_time();
     return res;
 }
 
@@ -106,6 +173,7 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
                       SlumpPhases phases) {
     const double critical = rayleigh_time(s.material, s.radius_m);
     check_time_step(s.dt_s, critical, 0.2, force_dt);
+    // A resumed run takes its particles from the checkpoint; the fill only sizes the engine.
     Particles particles = phases.start ? *phases.start : fill_cone(s);
     SlumpResult res;
     // One explicit switch over the combinations a slump scene can ask for.

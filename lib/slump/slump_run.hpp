@@ -5,6 +5,7 @@
 // each choice is its own compiled engine, so a dry run executes no bridge code.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,13 +43,17 @@ struct SlumpResult {
 
 // Which part of the protocol to run: all of it; only fill and settle (final_state = the settled
 // fill, e.g. to hand to another engine); or lift and spread from a given settled state.
+// checkpoint: where to write the state when SIGINT/SIGTERM stops the run (none: stop without one);
+// resume: a checkpoint to continue from, bit for bit as if never interrupted.
 struct SlumpPhases {
     bool settle_only = false;
     const dem::Particles* start = nullptr;  // settled state: skip fill and settle
+    std::filesystem::path checkpoint, resume;
 };
 
 // progress is called about every 5 ms of simulated time. Throws InputError for a time step above
-// 0.2 × the Rayleigh time (unless force_dt) and std::runtime_error if the engine stops.
+// 0.2 × the Rayleigh time (unless force_dt) or a checkpoint of another scene, std::runtime_error if
+// the engine stops, and Interrupted (core/interrupt.hpp) after writing the checkpoint on a signal.
 SlumpResult run_slump(const SlumpScene& scene, const std::function<void(const SlumpProgress&)>& progress = {},
                       bool force_dt = false, SlumpPhases phases = {});
 

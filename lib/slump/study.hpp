@@ -22,6 +22,7 @@ struct StudyPlan {
     std::vector<double> exponents = {1, 3};
     std::vector<std::string> scaled;  // parameters scaled by the implied basis (coarse_grain.hpp)
     Tolerances tolerances;            // usually the scene's
+    int replicas = 1;                 // extra fine runs with seeds seed+1…: the fine-vs-fine noise floor
     int jobs = 1, threads_per_job = 1;
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
@@ -40,10 +41,13 @@ struct StudyRun {
 
 struct Study {
     StudyRun reference;
-    std::vector<StudyRun> runs;  // exponent-major, then S_f in the plan's order
+    std::vector<StudyRun> replicas;  // the fine scene with other seeds, compared like coarse runs
+    std::vector<StudyRun> runs;      // exponent-major, then S_f in the plan's order
     Tolerances tolerances;
     double wall_s = 0;           // this call's wall time (cached runs cost nothing)
-    bool all_within() const;
+    bool all_within() const;  // every coarse run (replicas are not judged)
+    // The largest |error| between the reference and its replicas (zero without replicas).
+    RunComparison noise_floor() const;
     // The run with the smallest profile error at this S_f, over the exponents.
     const StudyRun& best_at(double sf) const;
 };

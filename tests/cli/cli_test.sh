@@ -148,6 +148,25 @@ case $case_name in
     grep '^| 1.4 ' "$work/sweep.md" | awk -F'|' 'NF > 10' >"$work/rows"
     [ "$(wc -l <"$work/rows")" -eq 2 ] || fail "sweep rows: $(cat "$work/rows")"
     grep -qFf "$work/rows" "$md" || fail "slump rows in the report differ from demscale sweep" ;;
+  slump_sigint_then_resume)
+    args=(slump --scene "$src/data/scenes/small_wet.toml" --format json --no-png)
+    "$demscale" "${args[@]}" --out "$work/whole" >"$work/whole.json" 2>/dev/null || fail "uninterrupted run failed"
+    "$demscale" "${args[@]}" --out "$work/cut" >"$work/cut.json" 2>"$work/cut.err" &
+    pid=$!
+    sleep 1
+    kill -INT $pid
+    wait $pid; rc=$?
+    [ "$rc" -eq 130 ] || { cat "$work/cut.err" >&2; fail "interrupted run exited $rc, expected 130"; }
+    grep -q -- '--resume .*slump.ckpt' "$work/cut.err" || { cat "$work/cut.err" >&2; fail "no resume hint"; }
+    [ -s "$work/cut/slump.ckpt" ] || fail "no checkpoint written"
+    [ ! -e "$work/cut/slump_profile.csv" ] || fail "an interrupted run wrote results"
+    expect 0 '"final_height_mm"' -- "$demscale" "${args[@]}" --out "$work/cut" --resume "$work/cut/slump.ckpt"
+    # Same physics bit for bit: every measurement but the timing lines.
+    grep -E '^ +"' "$work/whole.json" | grep -vE '"(wall_s|particle_steps_per_s|threads)"' >"$work/a"
+    grep -E '^ +"' "$work/out" | grep -vE '"(wall_s|particle_steps_per_s|threads)"' >"$work/b"
+    [ "$(wc -l <"$work/a")" -ge 15 ] || fail "too few measurements compared"
+    diff "$work/a" "$work/b" >&2 || fail "resumed run differs from the uninterrupted one"
+    [ ! -e "$work/cut/slump.ckpt" ] || fail "checkpoint left behind after a finished resume" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

@@ -1,10 +1,12 @@
 // The slump protocol and its measurements.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/fill.hpp"
 #include "slump/measurements.hpp"
@@ -86,4 +88,45 @@ TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][er
     s.dt_s = 1e-3;  // above 0.2 x the Rayleigh time (250 us here)
     CHECK_THROWS_WITH(run_slump(s), Catch::Matchers::Contains("dt = 0.001 s"));
     CHECK_THROWS_WITH(coarse_grained(small(true), {5.0, 1.0, {}}), Catch::Matchers::Contains("--sf = 5"));
+}
+
+TEST_CASE("Interrupted in each phase and resumed from the checkpoint: identical to an uninterrupted run", "[slump][resume]") {
+    const auto scene = small(true);
+    const auto whole = run_slump(scene);
+    const auto ckpt = std::filesystem::temp_directory_path() / "demscale_resume_test.ckpt";
+    std::filesystem::remove(ckpt);
+    // Ask to stop the first time each phase reports progress, as SIGINT would.
+    SlumpPhases phases;
+    phases.checkpoint = ckpt;
+    std::vector<std::string> stopped_in;
+    auto stop_in_new_phase = [&](const SlumpProgress& p) {
+        if (std::find(stopped_in.begin(), stopped_in.end(), p.phase) == stopped_in.end()) {
+            stopped_in.push_back(p.phase);
+            request_interrupt();
+        }
+    };
+    SlumpResult r;
+    for (int attempt = 0;; ++attempt) {
+        REQUIRE(attempt < 5);
+        try {
+            r = run_slump(scene, stop_in_new_phase, false, phases);
+            break;
+        } catch (const Interrupted& e) {
+            clear_interrupt();
+            CHECK(e.checkpoint() == ckpt.string());
+            phases.resume = ckpt;
+        }
+    }
+    CHECK(stopped_in == std::vector<std::string>{"settle", "lift", "spread"});
+    CHECK(r.steps == whole.steps);
+    CHECK(r.final_state.position == whole.final_state.position);
+    CHECK(r.final.height == whole.final.height);
+    CHECK(r.history.size() == whole.history.size());
+    CHECK(r.settle_end == whole.settle_end);
+    CHECK(r.lift_end == whole.lift_end);
+    // A checkpoint of another scene is refused, naming the option.
+    auto other = scene;
+    other.seed = 7;
+    CHECK_THROWS_WITH(run_slump(other, {}, false, phases), Catch::Matchers::Contains("--resume"));
+    std::filesystem::remove(ckpt);
 }
