@@ -65,7 +65,8 @@ void html_table(std::ostringstream& h, const io::Table& t) {
     for (const auto& row : t.rows) {
         h << "<tr>";
         for (const auto& c : row)
-            h << (std::holds_alternative<double>(c) ? "<td class=\"num\">" : "<td>") << escape_html(cell_text(c)) << "</td>";
+            h << (std::holds_alternative<double>(c) ? "<td class=\"num\">" : cell_text(c).size() > 40 ? "<td class=\"long\">" : "<td>")
+              << escape_html(cell_text(c)) << "</td>";
         h << "</tr>\n";
     }
     h << "</tbody></table></div>\n";
@@ -80,7 +81,8 @@ th{background:#eef3f8;text-align:left}td.num{text-align:right;font-variant-numer
 tbody tr:nth-child(even){background:#fafafa}figure{margin:1.2em 0}figcaption{font-weight:bold;margin-bottom:.4em}
 figure.plot figcaption{font-weight:normal;font-style:italic;margin-top:.3em}.scroll{overflow-x:auto}
 ul.meta{font-size:.85em;color:#444;margin:.2em 0 .5em}p.note{font-size:.85em;color:#555;margin:.2em 0}
-img{max-width:100%;border:1px solid #e0e0e0})";
+img{max-width:100%;border:1px solid #e0e0e0}td.long{min-width:24em}
+figure.half{display:inline-block;width:49%;margin:.5em 0;vertical-align:top}figure.half figcaption{font-size:.85em})";
 
 }  // namespace
 
@@ -144,7 +146,7 @@ std::string render_html(const Document& d) {
                                },
                                [&](const TableBlock& t) { html_table(h, t.table); },
                                [&](const FigureBlock& f) {
-                                   h << "<figure class=\"plot\"><img alt=\"" << escape_html(f.caption)
+                                   h << "<figure class=\"plot" << (f.half_width ? " half" : "") << "\"><img alt=\"" << escape_html(f.caption)
                                      << "\" src=\"data:image/png;base64," << base64(read_binary(f.png)) << "\">\n<figcaption>"
                                      << escape_html(f.caption) << "</figcaption></figure>\n";
                                }},

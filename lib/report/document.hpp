@@ -24,6 +24,7 @@ struct TableBlock {
 struct FigureBlock {
     std::filesystem::path png;  // an existing PNG file
     std::string caption;
+    bool half_width = false;    // HTML: two such figures side by side (a gallery of small multiples)
 };
 using Block = std::variant<Paragraph, BulletList, TableBlock, FigureBlock>;
 

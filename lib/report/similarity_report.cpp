@@ -226,7 +226,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             const auto title = what + ": " + std::to_string(r.result.particles) + " particles, slump " +
                                format_short(r.result.slump() * 1e3, 3) + " mm, spread d95 " + format_short(r.result.final.spread_d95 * 1e3, 3) + " mm";
             slump::write_slump_files(r.result, title, figures, stem, true);
-            slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title});
+            slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title, true});
         };
         side(study.reference, "slump_reference", "fine reference (S_f = 1)");
         for (const auto& r : study.replicas)
