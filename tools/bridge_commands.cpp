@@ -42,8 +42,10 @@ int run_bridge(const Options& o) {
     std::vector<io::Cell> row = {o.model, o.vhat, o.theta_deg, o.hhat};
     if (o.model == "exact") {
         const auto r = bridge::solve_young_laplace(o.vhat, theta, std::max(o.hhat, 0.0));
-        if (r.status == bridge::YoungLaplaceStatus::not_converged || r.status == bridge::YoungLaplaceStatus::outside_scope)
-            throw std::runtime_error("exact bridge: " + r.message);
+        if (r.status == bridge::YoungLaplaceStatus::outside_scope)
+            throw InputError("--vhat, --theta", format_number(o.vhat) + ", " + format_number(o.theta_deg),
+                             "a concave (pendular) bridge, the exact solver's scope (" + r.message + ")");
+        if (r.status == bridge::YoungLaplaceStatus::not_converged) throw std::runtime_error("exact bridge: " + r.message);
         t.columns.insert(t.columns.end(), {"neck_radius_over_r", "filling_angle_deg", "curvature_kappa", "volume_check"});
         row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0});
         if (r.ok()) row.insert(row.end(), {r.shape.neck_radius, r.shape.filling_angle * 180 / M_PI, r.shape.curvature, r.shape.volume});

@@ -58,15 +58,24 @@ private:
 class ExactModel final : public BridgeModel {
 public:
     std::string_view name() const override { return "exact"; }
-    double hhat_rupture(double vhat, ContactAngle theta) const override { return family(vhat, theta).hhat_rupture(); }
+    double hhat_rupture(double vhat, ContactAngle theta) const override {
+        checked(vhat, theta, family(vhat, theta).solve(0.0));
+        return family(vhat, theta).hhat_rupture();
+    }
     double fhat(double vhat, ContactAngle theta, double hhat) const override {
-        const auto r = family(vhat, theta).solve(std::max(hhat, 0.0));
-        if (r.status == YoungLaplaceStatus::above_rupture) return 0.0;
-        if (!r.ok()) throw std::runtime_error("exact bridge: " + r.message);
-        return r.shape.fhat_neck;
+        const auto r = checked(vhat, theta, family(vhat, theta).solve(std::max(hhat, 0.0)));
+        return r.status == YoungLaplaceStatus::above_rupture ? 0.0 : r.shape.fhat_neck;
     }
 
 private:
+    // Out of scope is the input's doing (InputError, exit 2); not converging is the solver's.
+    static const YoungLaplaceResult& checked(double vhat, ContactAngle theta, const YoungLaplaceResult& r) {
+        if (r.status == YoungLaplaceStatus::outside_scope)
+            throw InputError("vhat, theta", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg",
+                             "a concave (pendular) bridge, the exact solver's scope (" + r.message + ")");
+        if (r.status == YoungLaplaceStatus::not_converged) throw std::runtime_error("exact bridge: " + r.message);
+        return r;
+    }
     const YoungLaplaceBridge& family(double vhat, ContactAngle theta) const {
         return cache_.get(vhat, theta, [&] { return YoungLaplaceBridge(vhat, theta); });
     }
@@ -77,13 +86,25 @@ class WillettModel final : public BridgeModel {
 public:
     explicit WillettModel(bool full) : full_(full) {}
     std::string_view name() const override { return full_ ? "willett" : "willett-simple"; }
-    double hhat_rupture(double vhat, ContactAngle theta) const override { return willett_rupture_hhat(vhat, theta); }
+    double hhat_rupture(double vhat, ContactAngle theta) const override {
+        in_range(vhat);
+        return willett_rupture_hhat(vhat, theta);
+    }
     double fhat(double vhat, ContactAngle theta, double hhat) const override {
-        if (hhat > willett_rupture_hhat(vhat, theta)) return 0.0;
-        return full_ ? willett_full_fhat(vhat, theta, hhat) : willett_simple_fhat(vhat, theta, hhat);
+        if (hhat > hhat_rupture(vhat, theta)) return 0.0;
+        const double f = full_ ? willett_full_fhat(vhat, theta, hhat) : willett_simple_fhat(vhat, theta, hhat);
+        if (!std::isfinite(f))  // the fit's polynomials in ln V̂ overflow: refuse rather than return inf/NaN
+            throw InputError("vhat, theta, hhat", format_number(vhat) + ", " + format_number(theta.degrees()) + ", " + format_number(hhat),
+                             "values where Willett et al.'s fit is finite");
+        return f;
     }
 
 private:
+    // Pendular-bridge fits: cubic polynomials in ln V̂ that overflow far outside the volumes fitted
+    // (found by fuzzing: V̂ = 5e303 gave inf). Fuzz corpus: tests/fuzz/corpus/bridge/willett-overflow.
+    static void in_range(double vhat) {
+        if (!(vhat >= 1e-6 && vhat <= 1.0)) throw InputError("vhat", format_number(vhat), "[1e-06, 1] for Willett et al.'s fits");
+    }
     bool full_;
 };
 

@@ -7,6 +7,8 @@
 #include <memory>
 #include <numbers>
 
+#include "bridge/mikami.hpp"
+
 namespace demscale::bridge {
 
 namespace {
@@ -74,7 +76,7 @@ ToroidalBridge toroidal_bridge(double vhat, ContactAngle theta_angle, double hha
 }
 
 double willett_rupture_hhat(double vhat, ContactAngle theta) {
-    return (1.0 + 0.5 * theta.radians()) * (std::cbrt(vhat) + 0.1 * std::pow(vhat, 2.0 / 3.0));  // Eq. 15
+    return rupture_hhat(vhat, theta, RuptureLaw::willett2000);  // Eq. 15; refuses a V̂ that is not finite and > 0
 }
 
 double willett_full_fhat(double vhat, ContactAngle theta_angle, double hhat) {

@@ -254,7 +254,8 @@ YoungLaplaceBridge::YoungLaplaceBridge(double vhat, ContactAngle theta, const Yo
 YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
     require_finite(hhat, "hhat");
     YoungLaplaceResult res;
-    if (!family_ok()) {
+    if (!family_ok()) {  // no concave bridge of this volume at this angle: the input is out of scope
+        res.status = YoungLaplaceStatus::outside_scope;
         res.message = family_message_;
         return res;
     }

@@ -69,7 +69,7 @@ class YoungLaplaceBridge {
 public:
     YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
 
-    // Valid when family_ok(); otherwise every solve() reports not_converged with family_message().
+    // Valid when family_ok(); otherwise every solve() reports outside_scope with family_message().
     bool family_ok() const { return rupture_.has_value() && widest_neck_.has_value(); }
     const std::string& family_message() const { return family_message_; }
     double hhat_rupture() const { return rupture_ ? rupture_->hhat : 0.0; }

@@ -140,6 +140,16 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     config.source = o.config_label;
     const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
     const auto scene = slump::load_slump_scene(o.scene_path);
+    slump::StudyPlan plan;
+    plan.fine = scene;
+    plan.exponents = ks;
+    plan.scale_factors = o.scale_factors;
+    plan.tolerances = scene.tolerances;
+    plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
+    plan.cache_dir = o.cache_dir;
+    plan.replicas = o.replicas;
+    slump::validate_plan(plan);  // a bad plan is refused before any file is written
+
     Document doc;
     doc.title = "demscale similarity report: " + scene.name;
     std::vector<std::string> caveats;
@@ -208,14 +218,6 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     });
 
     Section slump_section{"Slump test", {}};
-    slump::StudyPlan plan;
-    plan.fine = scene;
-    plan.exponents = ks;
-    plan.scale_factors = o.scale_factors;
-    plan.tolerances = scene.tolerances;
-    plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
-    plan.cache_dir = o.cache_dir;
-    plan.replicas = o.replicas;
     timed("slump study", [&] {
         const auto study = slump::run_study(plan, [&](const std::string& s) { say("slump: " + s); });
         slump_section.blocks.push_back(Paragraph{

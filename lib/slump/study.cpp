@@ -56,12 +56,18 @@ double expected_cost(const StudyRun& r, const SlumpScene& fine) {
 
 }  // namespace
 
-Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {
-    const auto start = std::chrono::steady_clock::now();
+void validate_plan(const StudyPlan& plan) {
     if (plan.jobs < 1) throw InputError("--jobs", std::to_string(plan.jobs), ">= 1");
     if (plan.threads_per_job < 1) throw InputError("--threads", std::to_string(plan.threads_per_job), ">= 1");
     if (plan.exponents.empty()) throw InputError("--exponents", "(none)", "at least one exponent");
     if (plan.replicas < 0 || plan.replicas > 20) throw InputError("--replicas", std::to_string(plan.replicas), "0 to 20");
+    for (double k : plan.exponents)
+        for (double sf : plan.scale_factors) coarse_grained(plan.fine, {sf, k, plan.scaled});
+}
+
+Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {
+    const auto start = std::chrono::steady_clock::now();
+    validate_plan(plan);
     Study study;
     study.tolerances = plan.tolerances;
     study.reference.grain = {1.0, plan.exponents.front(), {}};
@@ -75,7 +81,7 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
         for (double sf : plan.scale_factors) {
             StudyRun r;
             r.grain = {sf, k, plan.scaled};
-            r.scene = coarse_grained(plan.fine, r.grain);  // validates before anything runs
+            r.scene = coarse_grained(plan.fine, r.grain);
             study.runs.push_back(std::move(r));
         }
     // Distinct scenes only: S_f = 1 is the reference for every k; equal scenes run once.

@@ -52,6 +52,9 @@ struct Study {
     const StudyRun& best_at(double sf) const;
 };
 
+// Throws InputError for a bad plan: jobs, threads, replicas, exponents, any coarse scene.
+void validate_plan(const StudyPlan& plan);
+
 // Validates the whole plan (every coarse scene) before running anything. Progress lines go to log.
 // Throws InputError for a bad plan and std::runtime_error when a run fails.
 Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log = {});

@@ -92,7 +92,9 @@ case $case_name in
   bridge_bad_input_exit_2)
     expect 2 'did you mean willett' -- "$demscale" bridge --model wilett
     expect 2 'contact_angle_deg = 95' -- "$demscale" bridge --theta 95
-    expect 2 '\-\-vhat = -1' -- "$demscale" bridge --vhat -1 ;;
+    expect 2 '\-\-vhat = -1' -- "$demscale" bridge --vhat -1
+    # Found by the fuzz corpus: outside the exact solver's scope is bad input (exit 2), not a failure.
+    expect 2 'concave \(pendular\) bridge' -- "$demscale" bridge --vhat 0.1 --theta 89.9 --model exact ;;
   bridge_error_quick)
     expect 0 'mikami1998' -- "$demscale" bridge-error --quick --out "$work/be"
     for f in bridge_error.csv bridge_error_summary.csv bridge_mikami_error.png bridge_speed_error.png; do
@@ -123,7 +125,13 @@ case $case_name in
     expect 2 '--scale = viscosity' -- "$demscale" check-exponent --exponent 1 --scale viscosity --out "$work/c"
     expect 2 '--tol-profile = -1|--tol-profile = -0.5' -- "$demscale" check-exponent --exponent 1 --tol-profile -0.5 --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" check-exponent --exponent 1 --sf 20 --out "$work/c"
-    [ ! -e "$work/c" ] || fail "a refused study created output" ;;
+    expect 2 '--replicas = 50.*0 to 20' -- "$demscale" sweep --exponents 1 --replicas 50 --out "$work/c"
+    expect 2 '--jobs = -1' -- "$demscale" sweep --jobs -1 --out "$work/c"
+    expect 2 '--exponents = "x"' -- "$demscale" report --exponents 1,x --out "$work/c"
+    printf '[check]\nslump_tolerance = -1\n' >"$work/bad.toml"
+    expect 2 'bad.toml:2: check.slump_tolerance = -1' -- "$demscale" report --quick --scene "$work/bad.toml" --out "$work/c"
+    expect 2 '--sf = 20.*top opening' -- "$demscale" report --quick --sf 20 --out "$work/c"
+    [ ! -e "$work/c" ] || fail "a refused study or report created output" ;;
   report_quick_structure)
     expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"
     md="$work/r/report.md" html="$work/r/report.html"
