@@ -81,22 +81,44 @@ std::string render_csv(const Table& t) {
     return out.str();
 }
 
+// Characters as a reader counts them (UTF-8 continuation bytes do not add width).
+std::size_t display_width(const std::string& s) {
+    std::size_t n = 0;
+    for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+    return n;
+}
+
+// Padded so that the table also reads as plain text: numbers right-aligned, text left-aligned.
 std::string render_markdown(const Table& t) {
     std::ostringstream out;
     if (!t.title.empty()) out << "### " << t.title << "\n\n";
     for (const auto& [k, v] : t.metadata) out << "- **" << k << "**: " << v << "\n";
+    const std::size_t n = t.columns.size();
+    std::vector<std::size_t> width(n);
+    std::vector<bool> numeric(n, true);
+    for (std::size_t j = 0; j < n; ++j) width[j] = std::max<std::size_t>(3, display_width(t.columns[j]));
+    for (const auto& row : t.rows)
+        for (std::size_t j = 0; j < row.size() && j < n; ++j) {
+            width[j] = std::max(width[j], display_width(cell_text(row[j], false)));
+            numeric[j] = numeric[j] && std::holds_alternative<double>(row[j]);
+        }
+    auto cell = [&](const std::string& text, std::size_t j) {
+        const std::string pad(width[j] - display_width(text), ' ');
+        out << " " << (numeric[j] ? pad + text : text + pad) << " |";
+    };
     out << "\n|";
-    for (const auto& c : t.columns) out << " " << c << " |";
+    for (std::size_t j = 0; j < n; ++j) cell(t.columns[j], j);
     out << "\n|";
-    for (std::size_t j = 0; j < t.columns.size(); ++j) out << "---:|";
+    for (std::size_t j = 0; j < n; ++j)
+        out << (numeric[j] ? std::string(width[j] + 1, '-') + ":|" : ":" + std::string(width[j] + 1, '-') + "|");
     out << "\n";
     for (const auto& row : t.rows) {
         out << "|";
-        for (const auto& c : row) out << " " << cell_text(c, false) << " |";
+        for (std::size_t j = 0; j < row.size() && j < n; ++j) cell(cell_text(row[j], false), j);
         out << "\n";
     }
     if (!t.notes.empty()) out << "\n";
-    for (const auto& n : t.notes) out << "> note: " << n << "\n";
+    for (const auto& note : t.notes) out << "> note: " << note << "\n";
     return out.str();
 }
 

@@ -13,6 +13,8 @@ namespace demscale::slump {
 
 namespace {
 
+// Part of every key: bump it whenever a change to the engine or the protocol changes results, so
+// runs cached by older code are not reused.
 constexpr int cache_format = 1;
 
 std::string canonical(const SlumpScene& s) {

@@ -35,6 +35,13 @@ TEST_CASE("Every format renders every row", "[io][format]") {
         CHECK(s.find("radius_mm") != std::string::npos);
         CHECK(s.find("0.05") != std::string::npos);
     }
-    CHECK(io::render(t, io::Format::markdown).find("|---:|---:|") != std::string::npos);
+    // Markdown reads as plain text too: padded columns, numbers right-aligned, text left-aligned.
+    t.columns.push_back("note");
+    t.rows[0].push_back(std::string("γ ok"));
+    t.rows[1].push_back(std::string("longer text"));
+    const auto md = io::render(t, io::Format::markdown);
+    CHECK(md.find("| radius_mm | vhat | note        |\n") != std::string::npos);
+    CHECK(md.find("|----------:|-----:|:------------|\n") != std::string::npos);
+    CHECK(md.find("|         1 | 0.05 | γ ok        |\n") != std::string::npos);
     CHECK_THROWS(io::parse_format("xml", "--format"));
 }
