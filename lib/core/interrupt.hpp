@@ -11,7 +11,6 @@ void install_interrupt_handlers();
 bool interrupt_requested();
 void request_interrupt();  // what the handler does; also for tests
 void clear_interrupt();
-int interrupt_signal();    // the signal that asked (SIGINT, SIGTERM), 0 when requested directly
 
 class Interrupted : public std::runtime_error {
 public:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "bridge/bridge_model.hpp"
@@ -68,6 +69,8 @@ io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label)
 io::Table bridge_at_scene(double vhat, ContactAngle theta) {
     const auto exact = bridge::make_bridge_model("exact");
     const std::vector<std::string> names = {"mikami1998", "yun-park-2017"};
+    std::vector<std::unique_ptr<bridge::BridgeModel>> models;
+    for (const auto& n : names) models.push_back(bridge::make_bridge_model(n));
     io::Table t;
     t.title = "Bridge force at the scene's liquid volume: regressions against the exact Young-Laplace bridge";
     t.metadata = {{"V^", format_short(vhat)}, {"theta_deg", format_short(theta.degrees())},
@@ -79,8 +82,8 @@ io::Table bridge_at_scene(double vhat, ContactAngle theta) {
         const double h = f * rupture;
         const double e = exact->fhat(vhat, theta, h);
         std::vector<io::Cell> row = {h, e};
-        for (const auto& n : names) {
-            const double m = bridge::make_bridge_model(n)->fhat(vhat, theta, h);
+        for (const auto& model : models) {
+            const double m = model->fhat(vhat, theta, h);
             row.push_back(m);
             row.push_back(e > 0 ? 100 * (m - e) / e : 0.0);
         }

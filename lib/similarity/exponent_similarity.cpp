@@ -1,6 +1,7 @@
 #include "similarity/exponent_similarity.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "similarity/quantity_catalogue.hpp"
 #include "similarity/stress_similarity.hpp"
@@ -19,12 +20,20 @@ double implied_time_exponent(double k) {
     return t == 0 ? 0.0 : t;  // no "-0" in tables
 }
 
+// The parameters a slump scene holds physical unless told to scale them: key, and how a person says it.
+const std::pair<std::string, std::string> held_parameters[] = {
+    {"gravity", "gravitational acceleration g"}, {"youngs_modulus", "Young's modulus E"}, {"velocity", "lift speed"}};
+
 }  // namespace
 
 bool ExponentGroup::kept() const { return std::abs(sf_exponent) < 1e-12; }
 
 const std::vector<std::string>& scalable_parameters() {
-    static const std::vector<std::string> keys = {"gravity", "youngs_modulus", "velocity"};
+    static const std::vector<std::string> keys = [] {
+        std::vector<std::string> k;
+        for (const auto& held : held_parameters) k.push_back(held.first);
+        return k;
+    }();
     return keys;
 }
 
@@ -41,11 +50,7 @@ ExponentSimilarity exponent_similarity(double k) {
     for (const auto& g : bridge_similarity_groups()) s.groups.push_back({g.name, group_ratio_exponent(g, k)});
     s.groups.push_back({"particle Froude number v^2/(g R), v and g held", -1});
     s.groups.push_back({"pile Froude number v^2/(g H), cone held", 0});
-    const char* what[] = {"gravitational acceleration g", "Young's modulus E", "lift speed"};
-    for (std::size_t i = 0; i < scalable_parameters().size(); ++i) {
-        const auto& key = scalable_parameters()[i];
-        s.held.push_back({key, what[i], demanded_exponent(key, k, key)});
-    }
+    for (const auto& [key, what] : held_parameters) s.held.push_back({key, what, demanded_exponent(key, k, key)});
     return s;
 }
 

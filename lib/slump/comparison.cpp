@@ -23,8 +23,6 @@ RunComparison compare_runs(const SlumpResult& fine, const SlumpResult& coarse) {
     RunComparison c;
     c.slump_error = relative(coarse.slump(), fine.slump());
     c.spread_error = relative(coarse.final.spread_d95, fine.final.spread_d95);
-    c.spread_max_error = relative(coarse.final.spread_max, fine.final.spread_max);
-    c.repose_difference_deg = coarse.final.repose_angle_deg - fine.final.repose_angle_deg;
     // Bins cover both piles: the fine bins, extended to the coarse pile's reach.
     double diff2 = 0, ref2 = 0;
     const double width = fine.final.profile.size() > 1 ? fine.final.profile[1].radius - fine.final.profile[0].radius : 0;

@@ -11,8 +11,6 @@ namespace demscale::slump {
 struct RunComparison {
     double slump_error = 0;     // (s̄ − s) / s, signed
     double spread_error = 0;    // (d̄95 − d95) / d95, signed
-    double spread_max_error = 0;
-    double repose_difference_deg = 0;  // ᾱ − α
     double profile_error = 0;   // ‖h̄ − h‖₂ / ‖h‖₂ on the fine bins (uniform in radius)
     double wall_speedup = 0;    // fine wall time / coarse wall time
     double work_speedup = 0;    // fine particle-steps / coarse particle-steps

@@ -68,8 +68,6 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         if (st.phase >= 1) schedule_lift();
         if (st.phase >= 2) sim.remove_wall(1);
         sim.load(in);
-    } else if (phases.start) {
-        st.phase = 1;
     }
     auto wall_time = [&] { return st.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
     const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
@@ -118,8 +116,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         return false;
     };
 
-    if (st.phase == 0) st.settled = run_until_rest("settle", s.settle_time_s);
-    if (st.phase == 0 || (phases.start && phases.resume.empty())) {
+    if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
+        if (!phases.start) st.settled = run_until_rest("settle", s.settle_time_s);
         st.settle_end = sim.time();
         st.initial_height = measure_pile(sim.particles()).height;
         if (phases.settle_only) {

@@ -25,8 +25,6 @@ RunComparison Study::noise_floor() const {
         const auto& c = r.versus_reference;
         n.slump_error = std::max(n.slump_error, std::abs(c.slump_error));
         n.spread_error = std::max(n.spread_error, std::abs(c.spread_error));
-        n.spread_max_error = std::max(n.spread_max_error, std::abs(c.spread_max_error));
-        n.repose_difference_deg = std::max(n.repose_difference_deg, std::abs(c.repose_difference_deg));
         n.profile_error = std::max(n.profile_error, c.profile_error);
     }
     return n;
