@@ -99,6 +99,14 @@ int run_slump_command(const Options& o) {
     j["spread_max_mm"] = r.final.spread_max * 1e3;
     j["repose_angle_deg"] = r.final.repose_angle_deg;
     j["end_time_s"] = r.end;
+    if (!r.history.empty()) {  // the energy ledger at the end (J) and how well it balanced
+        const auto& e = r.history.back().energy;
+        const auto& d = e.dissipated;
+        j["energy_j"] = {{"kinetic", e.kinetic}, {"stored", e.stored.total()}, {"lost_normal_damping", d.normal_damping},
+                         {"lost_friction", d.friction}, {"lost_rolling", d.rolling}, {"lost_bridges", d.bridge},
+                         {"lost_spring_stiffness", d.spring_stiffness}, {"wall_work", e.wall_work}};
+        j["energy_balance_error"] = r.energy_balance_error();
+    }
     j["threads"] = omp_get_max_threads();
     const auto warnings = slump::geometry_warnings(scene, r.particles);
     j["warnings"] = warnings;

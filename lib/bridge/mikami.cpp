@@ -66,6 +66,28 @@ std::optional<double> negative_onset_hhat(const MikamiCoefficients& k) {
     return std::nullopt;
 }
 
+double mikami_work_to_rupture(const MikamiCoefficients& k, double hhat) {
+    if (!(hhat < k.hhat_rupture)) return 0.0;
+    const double overlap_part = hhat < 0.0 ? mikami_fhat(k, 0.0) * -hhat : 0.0;
+    // F̂ > 0 on one interval of [0, ĥ_c]: exp(Aĥ+B) is monotone, so it crosses −C at most once.
+    double lo = std::max(hhat, 0.0), hi = k.hhat_rupture;
+    if (k.c < 0.0) {
+        const double threshold = std::log(-k.c) - k.b;  // F̂ > 0 ⇔ Aĥ > threshold
+        if (k.a == 0.0) {
+            if (!(0.0 > threshold)) return overlap_part;
+        } else if (k.a < 0.0) {
+            hi = std::min(hi, threshold / k.a);
+        } else {
+            lo = std::max(lo, threshold / k.a);
+        }
+    }
+    if (!(hi > lo)) return overlap_part;
+    const auto primitive = [&](double h) {
+        return k.a == 0.0 ? (std::exp(k.b) + k.c) * h : std::exp(k.a * h + k.b) / k.a + k.c * h;
+    };
+    return overlap_part + primitive(hi) - primitive(lo);
+}
+
 double bridge_force_newton(const MikamiCoefficients& k, double fhat, double radius_m, double gamma_n_per_m) {
     const double f = k.force_scale * radius_m * gamma_n_per_m * fhat;
     if (!std::isfinite(f))

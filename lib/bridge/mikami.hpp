@@ -58,6 +58,11 @@ MikamiEvaluation evaluate_mikami(const MikamiCoefficients& k, double hhat);
 // ĥ at which the regression crosses zero before rupture, if it does (where clamping starts).
 std::optional<double> negative_onset_hhat(const MikamiCoefficients& k);
 
+// ∫ F̂ dĥ' from ĥ to rupture (Eq. 2 integrated in closed form): the work, in units of
+// force_scale·R²·γ, to pull a bridge from gap ĥ until it ruptures; an overlap (ĥ < 0) adds F̂(0)·|ĥ|.
+// The bridge's potential energy in the DEM ledger is minus this. 0 for ĥ ≥ ĥ_rupture.
+double mikami_work_to_rupture(const MikamiCoefficients& k, double hhat);
+
 // Capillary force in newtons, F = force_scale·R·γ·F̂ (Eq. 1). R in m, γ in N/m.
 // Throws std::overflow_error if the product is not finite.
 double bridge_force_newton(const MikamiCoefficients& k, double fhat, double radius_m, double gamma_n_per_m);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "dem/contact_pair.hpp"
+#include "dem/energy.hpp"
 #include "dem/laws/cohesion.hpp"
 #include "dem/laws/normal_hertz.hpp"
 #include "dem/laws/normal_linear.hpp"
@@ -20,7 +21,7 @@ struct ContactForce {
     Vec3 on_i = Vec3::Zero();       // force on particle i (j gets −on_i)
     Vec3 tangential = Vec3::Zero(); // its tangential part (for torques)
     Vec3 rolling_torque = Vec3::Zero();  // on i (j gets the opposite)
-    double damping_power = 0;       // F_damping · v_rel (≤ 0), W
+    Dissipation lost;               // J dissipated in this step, by mechanism
 };
 
 template <class Normal, class Tangential = TangentialNone, class Cohesion = CohesionNone, class Rolling = RollingNone>
@@ -49,23 +50,40 @@ struct ContactLaw {
             const double damping = normal.damping_force(c);
             elastic = normal.elastic_force(c);
             fn = elastic + damping;
-            out.damping_power = damping * c.v_normal;
+            out.lost.normal_damping = -damping * c.v_normal * c.dt;
         }
-        const double attraction = cohesion.force(c, s.cohesion);
+        const double attraction = cohesion.force(c, s.cohesion, out.lost);
         out.on_i = (fn - attraction) * c.normal;
         if (c.overlap > 0) {
-            out.tangential = tangential.force(c, fn, s.tangential);
+            out.tangential = tangential.force(c, fn, s.tangential, out.lost);
             out.on_i += out.tangential;
             // Rolling stiffness uses the secant normal stiffness F_el/δ (as LIGGGHTS' epsd2 does).
-            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling);
+            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling, out.lost);
         } else {  // surfaces apart: tangential and rolling springs are released
-            s.tangential = {};
-            s.rolling = {};
+            tangential.release(s.tangential, out.lost);
+            rolling.release(s.rolling, out.lost);
         }
         return out;
     }
 
-    double elastic_energy(const ContactPair& c) const { return c.overlap > 0 ? normal.elastic_energy(c) : 0.0; }
+    // The pair moved out of range: forget its history, booking what its springs still held.
+    void release(State& s, Dissipation& lost) const {
+        tangential.release(s.tangential, lost);
+        rolling.release(s.rolling, lost);
+        s = {};
+    }
+
+    // What this contact holds now (its state as the last force evaluation left it), J.
+    StoredEnergy stored_energy(const ContactPair& c, const State& s) const {
+        StoredEnergy e;
+        e.bridge = cohesion.stored_energy(c, s.cohesion);
+        if (c.overlap > 0) {
+            e.normal = normal.elastic_energy(c);
+            e.tangential = tangential.stored_energy(c, s.tangential);
+            e.rolling = rolling.stored_energy(c, normal.elastic_force(c) / c.overlap, s.rolling);
+        }
+        return e;
+    }
 };
 
 }  // namespace demscale::dem

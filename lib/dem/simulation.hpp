@@ -2,13 +2,18 @@
 // (translation and rotation), a Verlet neighbour list with contact history carried across rebuilds,
 // and energy bookkeeping. SI units.
 // Threads (OpenMP): pair forces are computed in parallel into a per-pair buffer, then each particle
-// sums its contributions in a fixed pair order, so results are bit-identical for any thread count.
+// sums its contributions in a fixed pair order, so trajectories are bit-identical for any thread
+// count (the energy ledger's sums, per thread, only for the same thread count).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <istream>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <type_traits>
@@ -17,17 +22,11 @@
 
 #include "core/input_error.hpp"
 #include "dem/contact_law.hpp"
+#include "dem/energy.hpp"
 #include "dem/neighbor_list.hpp"
 #include "dem/walls.hpp"
 
 namespace demscale::dem {
-
-struct Energy {
-    double kinetic = 0;        // translational + rotational, J
-    double gravitational = 0;  // Σ −m g·x, J (zero at the origin)
-    double elastic = 0;        // normal springs in contact, J
-    double damped = 0;         // dissipated by normal damping so far, J
-};
 
 template <class Law>
 class Simulation {
@@ -58,7 +57,10 @@ public:
     std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
     // Takes a wall out of the scene (the slump cone after its lift), with its contact history.
+    // The energy its contacts held leaves with it (booked as work the wall took away).
     void remove_wall(std::size_t index) {
+        for (std::size_t i = 0; i < p_.size(); ++i)
+            if (const auto c = wall_contact(walls_[index], i)) wall_work_ -= law_.stored_energy(*c, wall_state_[index][i]).total();
         walls_.erase(walls_.begin() + static_cast<long>(index));
         wall_state_.erase(wall_state_.begin() + static_cast<long>(index));
     }
@@ -73,10 +75,11 @@ public:
     std::size_t steps() const { return steps_; }
     double dt() const { return dt_; }
 
-    // Energies now. The stored elastic energy is summed here, on demand, rather than in every step.
+    // The energy ledger now. Stored energies are summed here, on demand, not in every step.
     Energy energy() const {
         Energy e;
-        e.damped = damped_;
+        e.dissipated = dissipated_;
+        e.wall_work = wall_work_;
         for (std::size_t i = 0; i < p_.size(); ++i) {
             e.kinetic += 0.5 * p_.mass[i] * p_.velocity[i].squaredNorm() +
                          0.5 * p_.inertia[i] * p_.angular_velocity[i].squaredNorm();
@@ -84,16 +87,13 @@ public:
         }
         for (const auto& q : pairs_) {
             const std::size_t i = q.i, j = q.j;
-            if ((p_.position[i] - p_.position[j]).norm() >= p_.radius[i] + p_.radius[j]) continue;
-            e.elastic += law_.elastic_energy(pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j],
-                                                           p_.radius[j], p_.mass[j], false));
+            if ((p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j] > law_.range()) continue;
+            e.stored += law_.stored_energy(pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j],
+                                                         p_.radius[j], p_.mass[j], false), q.state);
         }
-        for (const Wall& wall : walls_)
-            for (std::size_t i = 0; i < p_.size(); ++i) {
-                const WallPoint wp = closest_wall_point(wall, p_.position[i], time_);
-                if (wp.behind || (p_.position[i] - wp.point).norm() >= p_.radius[i]) continue;
-                e.elastic += law_.elastic_energy(pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true));
-            }
+        for (std::size_t w = 0; w < walls_.size(); ++w)
+            for (std::size_t i = 0; i < p_.size(); ++i)
+                if (const auto c = wall_contact(walls_[w], i)) e.stored += law_.stored_energy(*c, wall_state_[w][i]);
         return e;
     }
 
@@ -110,7 +110,8 @@ public:
         raw(checkpoint_magic, sizeof checkpoint_magic);
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
-        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&damped_, sizeof damped_);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
+            raw(&wall_work_, sizeof wall_work_);
         const std::size_t builds = neighbors_.builds();
         raw(&builds, sizeof builds);
         vec(neighbors_.built_at()), vec(pairs_);
@@ -135,7 +136,8 @@ public:
         if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0) throw std::runtime_error("not a demscale checkpoint");
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
-        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&damped_, sizeof damped_);
+        raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
+            raw(&wall_work_, sizeof wall_work_);
         std::size_t builds = 0;
         raw(&builds, sizeof builds);
         std::vector<Vec3> built_at;
@@ -161,7 +163,7 @@ public:
     }
 
 private:
-    static constexpr char checkpoint_magic[16] = "demscale-ckpt-2";
+    static constexpr char checkpoint_magic[16] = "demscale-ckpt-3";
     // Below this many items a loop runs serially: thread start-up would cost more than the work.
     static constexpr long parallel_threshold = 512;
     // States are written as bytes: plain fixed-size data only.
@@ -173,8 +175,25 @@ private:
     };
     struct PairResult {  // what one pair contributes this step
         Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
-        double damping_power = 0;
     };
+    struct alignas(64) ThreadLedger {  // one thread's share of this step's ledger (own cache line)
+        Dissipation lost;
+        double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
+    };
+    static int max_threads() {
+#ifdef _OPENMP
+        return omp_get_max_threads();
+#else
+        return 1;
+#endif
+    }
+    static int thread_index() {
+#ifdef _OPENMP
+        return omp_get_thread_num();
+#else
+        return 0;
+#endif
+    }
 
     void half_kick() {
         for (std::size_t i = 0; i < p_.size(); ++i) {
@@ -238,25 +257,33 @@ private:
     void compute_forces() {
         const double reach = law_.range();
         const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p_.size());
-#pragma omp parallel for schedule(static) if (n_pairs > parallel_threshold)
-        for (long k = 0; k < n_pairs; ++k) {
-            auto& q = pairs_[static_cast<std::size_t>(k)];
-            PairResult& out = results_[static_cast<std::size_t>(k)];
-            out = PairResult{};
-            const std::size_t i = q.i, j = q.j;
-            const double gap = (p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j];
-            if (gap > reach) {
-                q.state = {};
-                continue;
+        // The ledger is summed per thread and then in thread order: deterministic for a given thread
+        // count, and no per-pair storage for it.
+        thread_ledger_.assign(static_cast<std::size_t>(max_threads()), ThreadLedger{});
+#pragma omp parallel if (n_pairs > parallel_threshold)
+        {
+            Dissipation lost;
+#pragma omp for schedule(static)
+            for (long k = 0; k < n_pairs; ++k) {
+                auto& q = pairs_[static_cast<std::size_t>(k)];
+                PairResult& out = results_[static_cast<std::size_t>(k)];
+                out = PairResult{};
+                const std::size_t i = q.i, j = q.j;
+                const double gap = (p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j];
+                if (gap > reach) {
+                    law_.release(q.state, lost);
+                    continue;
+                }
+                const ContactPair c = pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j], p_.radius[j],
+                                                    p_.mass[j], false);
+                const ContactForce f = law_.force(c, q.state);
+                const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
+                out.force_i = f.on_i;
+                out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
+                out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+                lost += f.lost;
             }
-            const ContactPair c = pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j], p_.radius[j],
-                                                p_.mass[j], false);
-            const ContactForce f = law_.force(c, q.state);
-            const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
-            out.force_i = f.on_i;
-            out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
-            out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
-            out.damping_power = f.damping_power;
+            thread_ledger_[static_cast<std::size_t>(thread_index())].lost += lost;
         }
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long ii = 0; ii < n; ++ii) {
@@ -270,40 +297,68 @@ private:
             p_.force[i] = f;
             p_.torque[i] = t;
         }
-        double damping_power = 0;
-        for (const PairResult& r : results_) damping_power += r.damping_power;
-        wall_damping_.assign(p_.size(), 0.0);
         std::string wall_error;
-#pragma omp parallel for schedule(static) if (n * static_cast<long>(walls_.size()) > parallel_threshold)
-        for (long ii = 0; ii < n; ++ii) {
-            const std::size_t i = static_cast<std::size_t>(ii);
-            for (std::size_t w = 0; w < walls_.size(); ++w) {
-                const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
-                if (wp.behind) {
+#pragma omp parallel if (n * static_cast<long>(walls_.size()) > parallel_threshold)
+        {
+            ThreadLedger local;
+#pragma omp for schedule(static)
+            for (long ii = 0; ii < n; ++ii) {
+                const std::size_t i = static_cast<std::size_t>(ii);
+                for (std::size_t w = 0; w < walls_.size(); ++w) {
+                    const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
+                    if (wp.behind) {
 #pragma omp critical
-                    wall_error = "particle " + std::to_string(i) + " left the domain through wall " + std::to_string(w) +
-                                 " at step " + std::to_string(steps_);
-                    continue;
+                        wall_error = "particle " + std::to_string(i) + " left the domain through wall " + std::to_string(w) +
+                                     " at step " + std::to_string(steps_);
+                        continue;
+                    }
+                    if ((p_.position[i] - wp.point).norm() - p_.radius[i] > reach) {
+                        law_.release(wall_state_[w][i], local.lost);
+                        continue;
+                    }
+                    const ContactPair c = pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
+                    const ContactForce f = law_.force(c, wall_state_[w][i]);
+                    p_.force[i] += f.on_i;
+                    p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
+                    local.lost += f.lost;
+                    local.wall_power += f.on_i.dot(wp.velocity);
                 }
-                if ((p_.position[i] - wp.point).norm() - p_.radius[i] > reach) {
-                    wall_state_[w][i] = {};
-                    continue;
-                }
-                const ContactPair c = pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
-                const ContactForce f = law_.force(c, wall_state_[w][i]);
-                p_.force[i] += f.on_i;
-                p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
-                wall_damping_[i] += f.damping_power;
             }
+            auto& mine = thread_ledger_[static_cast<std::size_t>(thread_index())];
+            mine.lost += local.lost, mine.wall_power += local.wall_power;
         }
         if (!wall_error.empty()) throw std::runtime_error(wall_error);
-        for (std::size_t i = 0; i < p_.size(); ++i) damping_power += wall_damping_[i];
+        for (const ThreadLedger& t : thread_ledger_) dissipated_ += t.lost, wall_work_ += t.wall_power * dt_;
         for (std::size_t i = 0; i < p_.size(); ++i)
-            for (int k = 0; k < 3; ++k)
-                if (!std::isfinite(p_.force[i][k]))
-                    throw std::runtime_error("non-finite force on particle " + std::to_string(i) + " at step " +
-                                             std::to_string(steps_));
-        damped_ -= damping_power * dt_;
+            if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i));
+    }
+
+    // Why particle i got a non-finite force or torque: its own state, or the first contact (in pair
+    // order, then walls) whose contribution is not finite.
+    std::string non_finite_report(std::size_t i) const {
+        std::string why = "non-finite force on particle " + std::to_string(i) + " at step " + std::to_string(steps_) +
+                          " (t = " + std::to_string(time_) + " s)";
+        if (!p_.position[i].allFinite() || !p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite())
+            return why + ": its position or velocity is not finite";
+        for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+            const PairResult& r = results_[incidence_[e] / 2];
+            if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
+            const auto& q = pairs_[incidence_[e] / 2];
+            const std::size_t other = q.i == i ? q.j : q.i;
+            const double gap = (p_.position[i] - p_.position[other]).norm() - p_.radius[i] - p_.radius[other];
+            return why + ", from its contact with particle " + std::to_string(other) + " (gap " + std::to_string(gap) + " m)";
+        }
+        for (std::size_t w = 0; w < walls_.size(); ++w)
+            if (const auto c = wall_contact(walls_[w], i))
+                return why + ", from its contact with wall " + std::to_string(w) + " (overlap " + std::to_string(c->overlap) + " m)";
+        return why;
+    }
+
+    // The contact geometry of particle i with a wall, if within the law's range of it.
+    std::optional<ContactPair> wall_contact(const Wall& wall, std::size_t i) const {
+        const WallPoint wp = closest_wall_point(wall, p_.position[i], time_);
+        if (wp.behind || (p_.position[i] - wp.point).norm() - p_.radius[i] > law_.range()) return std::nullopt;
+        return pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
     }
 
     Particles p_;
@@ -315,9 +370,10 @@ private:
     std::vector<ListedPair> pairs_;
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
-    std::vector<double> wall_damping_;
+    std::vector<ThreadLedger> thread_ledger_;
     std::vector<std::vector<typename Law::State>> wall_state_;
-    double damped_ = 0;  // J dissipated by normal damping so far
+    Dissipation dissipated_;  // so far, J
+    double wall_work_ = 0;    // J done by walls on particles so far
     double time_ = 0;
     std::size_t steps_ = 0;
 };

@@ -15,7 +15,7 @@ namespace {
 
 // Part of every key: bump it whenever a change to the engine or the protocol changes results, so
 // runs cached by older code are not reused.
-constexpr int cache_format = 1;
+constexpr int cache_format = 2;  // 2: history carries the energy ledger
 
 std::string canonical(const SlumpScene& s) {
     std::string t;
@@ -40,6 +40,24 @@ std::string canonical(const SlumpScene& s) {
     return t;
 }
 
+// One history sample as a flat array: time, height, spread, then the ledger field by field.
+nlohmann::json history_row(const TimePoint& h) {
+    const auto& e = h.energy;
+    const auto& d = e.dissipated;
+    return {h.time, h.height, h.spread_max, e.kinetic, e.gravitational, e.stored.normal, e.stored.tangential, e.stored.rolling,
+            e.stored.bridge, d.normal_damping, d.friction, d.rolling, d.bridge, d.spring_stiffness, e.wall_work};
+}
+TimePoint history_point(const nlohmann::json& a) {
+    TimePoint h{a.at(0), a.at(1), a.at(2), {}};
+    auto& e = h.energy;
+    auto& d = e.dissipated;
+    e.kinetic = a.at(3), e.gravitational = a.at(4);
+    e.stored = {a.at(5), a.at(6), a.at(7), a.at(8)};
+    d = {a.at(9), a.at(10), a.at(11), a.at(12), a.at(13)};
+    e.wall_work = a.at(14);
+    return h;
+}
+
 }  // namespace
 
 std::string scene_key(const SlumpScene& s) {
@@ -60,7 +78,7 @@ void RunCache::store(const std::string& key, const SlumpResult& r, int threads) 
     j["height"] = r.final.height, j["spread_d95"] = r.final.spread_d95, j["spread_max"] = r.final.spread_max;
     j["repose_angle_deg"] = r.final.repose_angle_deg;
     for (const auto& p : r.final.profile) j["profile"].push_back({p.radius, p.height});
-    for (const auto& h : r.history) j["history"].push_back({h.time, h.height, h.spread_max, h.kinetic_energy});
+    for (const auto& h : r.history) j["history"].push_back(history_row(h));
     // The state first: an entry counts only once its JSON exists.
     io::write_particle_state(dir_ / (key + ".csv"), r.final_state);
     io::write_file_atomically(dir_ / (key + ".json"), j.dump(1) + "\n");
@@ -80,7 +98,7 @@ std::optional<SlumpResult> RunCache::load(const std::string& key) const {
         r.final.height = j.at("height"), r.final.spread_d95 = j.at("spread_d95"), r.final.spread_max = j.at("spread_max");
         r.final.repose_angle_deg = j.at("repose_angle_deg");
         for (const auto& p : j.at("profile")) r.final.profile.push_back({p.at(0), p.at(1)});
-        for (const auto& h : j.at("history")) r.history.push_back({h.at(0), h.at(1), h.at(2), h.at(3)});
+        for (const auto& h : j.at("history")) r.history.push_back(history_point(h));
         r.final_state = io::read_particle_state((dir_ / (key + ".csv")).string());
         return r;
     } catch (const std::exception&) {

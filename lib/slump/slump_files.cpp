@@ -24,8 +24,15 @@ std::vector<fs::path> write_slump_files(const SlumpResult& r, const std::string&
 
     io::Table history;
     history.title = "Time history: " + title;
-    history.columns = {"time_s", "height_mm", "spread_max_mm", "kinetic_energy_j"};
-    for (const auto& h : r.history) history.rows.push_back({h.time, h.height * 1e3, h.spread_max * 1e3, h.kinetic_energy});
+    history.columns = {"time_s", "height_mm", "spread_max_mm", "kinetic_j", "gravitational_j", "stored_j",
+                       "lost_normal_damping_j", "lost_friction_j", "lost_rolling_j", "lost_bridges_j",
+                       "lost_spring_stiffness_j", "wall_work_j", "balance_j"};
+    for (const auto& h : r.history) {
+        const auto& e = h.energy;
+        const auto& d = e.dissipated;
+        history.rows.push_back({h.time, h.height * 1e3, h.spread_max * 1e3, e.kinetic, e.gravitational, e.stored.total(),
+                                d.normal_damping, d.friction, d.rolling, d.bridge, d.spring_stiffness, e.wall_work, e.balance()});
+    }
     put(stem + "_history.csv", io::render(history, io::Format::csv));
 
     io::Table final;

@@ -36,7 +36,7 @@ struct ProtocolState {
     std::uint8_t settled = 0;
     double settle_end = 0, initial_height = 0, lifted_at = 0;
 };
-constexpr char slump_checkpoint_magic[16] = "demscale-slump1";
+constexpr char slump_checkpoint_magic[16] = "demscale-slump2";
 
 template <class Law>
 SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
@@ -71,13 +71,18 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     }
     auto wall_time = [&] { return st.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
     const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
-    auto tick = [&](const std::string& phase, double end) {
-        if (sim.steps() % report_every != 0) return;
+    auto sample = [&] {
         const auto& p = sim.particles();
         double top = 0, spread = 0;
         for (std::size_t i = 0; i < p.size(); ++i)
             top = std::max(top, p.position[i].z() + p.radius[i]), spread = std::max(spread, std::hypot(p.position[i].x(), p.position[i].y()));
-        res.history.push_back({sim.time(), top, 2 * (spread + s.radius_m), sim.energy().kinetic});
+        res.history.push_back({sim.time(), top, 2 * (spread + s.radius_m), sim.energy()});
+    };
+    if (phases.resume.empty()) sample();
+    auto tick = [&](const std::string& phase, double end) {
+        if (sim.steps() % report_every != 0) return;
+        sample();
+        const auto& p = sim.particles();
         if (progress) {
             const double wall = wall_time();
             progress({phase, sim.time(), end, sim.steps(), wall > 0 ? double(res.particles * sim.steps()) / wall : 0, &p});
@@ -166,6 +171,12 @@ CohesionMikamiBridge bridge_for(const SlumpScene& s) {
 }
 
 }  // namespace
+
+double SlumpResult::energy_balance_error() const {
+    if (history.size() < 2) return 0;
+    const double lost = history.back().energy.dissipated.total() - history.front().energy.dissipated.total();
+    return lost > 0 ? (history.back().energy.balance() - history.front().energy.balance()) / lost : 0;
+}
 
 SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                       SlumpPhases phases) {

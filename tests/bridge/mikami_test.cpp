@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <gsl/gsl_integration.h>
 
 #include "bridge/mikami.hpp"
 #include "bridge/validity.hpp"
@@ -199,4 +200,31 @@ TEST_CASE("Contact angle: degrees where radians are expected cannot slip through
     CHECK_THROWS_AS(ContactAngle(Degrees{-1}), InputError);
     CHECK_THROWS_AS(ContactAngle(Degrees{std::nan("")}), InputError);
     CHECK_NOTHROW(ContactAngle(Degrees{89.999}));
+}
+
+TEST_CASE("Work to rupture equals the force integrated numerically (GSL adaptive quadrature)", "[mikami][energy]") {
+    // The DEM ledger's bridge potential: ∫ F̂ dĥ from ĥ to rupture, in closed form in the library.
+    // Here the same integral by QAGS over the clamped hot-path force, including the printed variant
+    // where the fit turns negative before rupture and is clamped.
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
+    for (const auto& options : {published, printed})
+        for (const auto geometry : {BridgeGeometry::sphere_sphere, BridgeGeometry::sphere_wall})
+            for (double vhat : {1e-3, 0.01, 0.05544, 0.1, 0.3})
+                for (double theta_deg : {0.0, 40.0}) {
+                    const auto k = mikami_coefficients(vhat, ContactAngle{Degrees{theta_deg}}, options, geometry);
+                    for (double from : {-0.05, 0.0, 0.3 * k.hhat_rupture, 0.9 * k.hhat_rupture}) {
+                        gsl_function f{[](double h, void* p) { return mikami_fhat(*static_cast<MikamiCoefficients*>(p), h); },
+                                       const_cast<MikamiCoefficients*>(&k)};
+                        double quad = 0, err = 0;
+                        const double lo = std::max(from, 0.0);
+                        gsl_integration_qags(&f, lo, k.hhat_rupture, 0, 1e-10, 1000, w, &quad, &err);
+                        quad += mikami_fhat(k, 0.0) * (lo - from);  // overlap: contact value
+                        INFO("V^ " << vhat << " theta " << theta_deg << " from " << from << " variant "
+                                   << to_string(options.variant) << " " << to_string(geometry));
+                        CHECK(mikami_work_to_rupture(k, from) == Approx(quad).epsilon(1e-8).margin(1e-14));
+                    }
+                    CHECK(mikami_work_to_rupture(k, k.hhat_rupture) == 0.0);
+                    CHECK(mikami_work_to_rupture(k, 2 * k.hhat_rupture) == 0.0);
+                }
+    gsl_integration_workspace_free(w);
 }

@@ -144,7 +144,8 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
     CHECK_FALSE(cache.load("0123456789abcdef"));
     SlumpResult r = triangle(0.02, 0.002, 0.01, 0.08);
     r.particles = 2, r.steps = 10, r.wall_s = 1.5, r.came_to_rest = true, r.final.repose_angle_deg = 30;
-    r.history = {{0.0, 0.05, 0.04, 1e-3}, {0.005, 0.049, 0.041, 2e-4}};
+    r.history = {{0.0, 0.05, 0.04, {}}, {0.005, 0.049, 0.041, {}}};
+    r.history[1].energy.kinetic = 2e-4, r.history[1].energy.dissipated.bridge = 3e-5, r.history[1].energy.wall_work = 1e-6;
     r.final_state.add({0, 0, 0.001}, 0.001, 2200);
     r.final_state.add({0.002, 0, 0.001}, 0.001, 2200);
     cache.store("0123456789abcdef", r, 1);
@@ -153,7 +154,10 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
     CHECK(back->slump() == r.slump());
     CHECK(back->final.profile.size() == r.final.profile.size());
     CHECK(back->final.profile[3].height == r.final.profile[3].height);
-    CHECK(back->history.size() == 2);
+    REQUIRE(back->history.size() == 2);
+    CHECK(back->history[1].energy.kinetic == 2e-4);  // the ledger travels field by field
+    CHECK(back->history[1].energy.dissipated.bridge == 3e-5);
+    CHECK(back->history[1].energy.wall_work == 1e-6);
     CHECK(back->final_state.size() == 2);
     CHECK(back->came_to_rest);
     std::ofstream(dir / "0123456789abcdef.json") << "{ truncated";

@@ -5,6 +5,8 @@
 //    the gap stays below the rupture distance ĥ_c·R, and is gone until the surfaces touch again.
 //    Equal spheres of radius R (monodisperse wet scenes); coefficients computed once (one exp per force).
 //    Walls use Mikami's sphere–wall coefficients when wet, no bridge when dry.
+//    Ledger: a bridge's potential is minus the work to pull it to rupture (Eq. 2 integrated); it
+//    appears at contact with that negative value, so each formation books the same amount as lost.
 #pragma once
 
 #include <algorithm>
@@ -12,13 +14,15 @@
 
 #include "bridge/mikami.hpp"
 #include "dem/contact_pair.hpp"
+#include "dem/energy.hpp"
 
 namespace demscale::dem {
 
 struct CohesionNone {
     struct State {};
     double range() const { return 0.0; }
-    double force(const ContactPair&, State&) const { return 0.0; }
+    double force(const ContactPair&, State&, Dissipation&) const { return 0.0; }
+    double stored_energy(const ContactPair&, const State&) const { return 0.0; }
 };
 
 struct CohesionMikamiBridge {
@@ -33,11 +37,14 @@ struct CohesionMikamiBridge {
     // Range beyond contact the neighbour search must cover: the rupture gap, m.
     double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
 
-    // Attractive force magnitude (N) along −n on particle i.
-    double force(const ContactPair& c, State& s) const {
+    // Attractive force magnitude (N) along −n on particle i; lost: what this step dissipates is added.
+    double force(const ContactPair& c, State& s, Dissipation& lost) const {
         if (c.wall && !wall) return 0.0;
         const bridge::MikamiCoefficients& law = c.wall ? *wall : k;
-        if (c.overlap >= 0) s.bridged = true;  // forms at contact
+        if (c.overlap >= 0 && !s.bridged) {  // forms at contact
+            s.bridged = true;
+            lost.bridge -= potential(law, c);
+        }
         if (!s.bridged) return 0.0;
         const double hhat = -c.overlap / radius;
         if (hhat > law.hhat_rupture) {  // ruptured: gone until the next contact
@@ -45,6 +52,17 @@ struct CohesionMikamiBridge {
             return 0.0;
         }
         return law.force_scale * radius * gamma * bridge::mikami_fhat(law, hhat);
+    }
+
+    // Potential energy of this pair's bridge, J (≤ 0; 0 without a bridge).
+    double stored_energy(const ContactPair& c, const State& s) const {
+        if (!s.bridged || (c.wall && !wall)) return 0.0;
+        return potential(c.wall ? *wall : k, c);
+    }
+
+private:
+    double potential(const bridge::MikamiCoefficients& law, const ContactPair& c) const {
+        return -law.force_scale * radius * radius * gamma * bridge::mikami_work_to_rupture(law, -c.overlap / radius);
     }
 };
 

@@ -4,11 +4,14 @@
 //    without its viscous part (as LIGGGHTS' epsd2): k_r = 2.25 k_n μ_r² R*² (k_n = F_n/δ), incremental torque
 //    ΔM = −k_r ω_roll dt with ω_roll the relative angular velocity in the tangent plane, and the
 //    plastic limit |M| ≤ μ_r R* F_n. Torque on i is M, on j is −M. SI units.
+//    Ledger: a step at the limit loses the work −M·Δθ less the spring's energy change; the stiffness
+//    change is booked apart.
 #pragma once
 
 #include <cmath>
 
 #include "dem/contact_pair.hpp"
+#include "dem/energy.hpp"
 #include "dem/material.hpp"
 
 namespace demscale::dem {
@@ -16,26 +19,53 @@ namespace demscale::dem {
 struct RollingNone {
     struct State {};
     explicit RollingNone(const Material&) {}
-    Vec3 torque(const ContactPair&, double, double, State&) const { return Vec3::Zero(); }
+    Vec3 torque(const ContactPair&, double, double, State&, Dissipation&) const { return Vec3::Zero(); }
+    double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
+    void release(State&, Dissipation&) const {}
 };
 
 struct RollingEpsd {
     struct State {
         Vec3 torque = Vec3::Zero();  // elastic rolling torque carried between steps, N m
+        double stiffness = 0;        // k_r at the last step, N m/rad (for the ledger)
     };
     double mu_r;
 
     explicit RollingEpsd(const Material& m) : mu_r(m.rolling_friction) {}
 
-    // normal_stiffness: secant k_n = F_el/δ of the normal law at this overlap (N/m); normal_force: F_n (N).
-    Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s) const {
+    double stiffness(const ContactPair& c, double normal_stiffness) const {
+        return 2.25 * normal_stiffness * mu_r * mu_r * c.r_eff * c.r_eff;
+    }
+
+    // normal_stiffness: secant k_n = F_el/δ of the normal law at this overlap (N/m); normal_force: F_n (N);
+    // lost: what this step dissipates is added.
+    Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s, Dissipation& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
-        const double kr = 2.25 * normal_stiffness * mu_r * mu_r * c.r_eff * c.r_eff;
+        const double kr = stiffness(c, normal_stiffness);
         s.torque -= c.normal * c.normal.dot(s.torque);  // keep it in the tangent plane
+        const double before = s.torque.squaredNorm();
+        if (s.stiffness > 0 && kr > 0) lost.spring_stiffness += 0.5 * before * (kr - s.stiffness) / (s.stiffness * kr);
+        s.stiffness = kr;
         s.torque -= kr * c.dt * w_roll;
         const double limit = mu_r * c.r_eff * std::abs(normal_force), magnitude = s.torque.norm();
-        if (magnitude > limit) s.torque *= limit / magnitude;  // full mobilisation: plastic rolling
+        if (magnitude > limit) {  // full mobilisation: plastic rolling
+            s.torque *= limit / magnitude;
+            lost.rolling += -s.torque.dot(w_roll) * c.dt - (kr > 0 ? 0.5 * (s.torque.squaredNorm() - before) / kr : 0.0);
+        }
         return s.torque;
+    }
+
+    // The surfaces parted: the spring lets go of what it held.
+    void release(State& s, Dissipation& lost) const {
+        if (s.stiffness == 0) return;  // nothing held
+        lost.spring_stiffness += 0.5 * s.torque.squaredNorm() / s.stiffness;
+        s = {};
+    }
+
+    // ½ |M|² / k_r, J.
+    double stored_energy(const ContactPair& c, double normal_stiffness, const State& s) const {
+        const double kr = stiffness(c, normal_stiffness);
+        return kr > 0 ? 0.5 * s.torque.squaredNorm() / kr : 0.0;
     }
 };
 
