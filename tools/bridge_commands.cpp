@@ -155,7 +155,7 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     err->add_flag("--no-png", o->no_png, "CSV and gnuplot scripts only");
 
     auto* bench = app.add_subcommand("bench", "benchmarks: cost per bridge force evaluation of every model (--dem: DEM engine)");
-    bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(CLI::PositiveNumber);
+    bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(finite_positive);
     bench->add_flag("--dem", o->dem, "benchmark the DEM engine instead: one slump scene under each law combination");
     bench->add_option("--scene", o->scene, "scene for --dem (default: data/scenes/small_wet.toml)");
     bench->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");

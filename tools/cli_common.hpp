@@ -3,6 +3,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -28,6 +30,20 @@ struct Command {
 // Inputs named relative to the source tree when they live in it, so outputs carry no machine's paths.
 io::TableConfig load_config(const std::string& path);
 std::string display_path(const std::string& path);
+
+// Option checks that also refuse NaN and infinity (CLI11's own number checks let NaN through).
+inline const CLI::Validator finite_positive(
+    [](std::string& s) {
+        const double x = std::strtod(s.c_str(), nullptr);
+        return std::isfinite(x) && x > 0 ? std::string() : "value " + s + "; accepted a finite number > 0";
+    },
+    "FINITE > 0");
+inline const CLI::Validator finite_non_negative(
+    [](std::string& s) {
+        const double x = std::strtod(s.c_str(), nullptr);
+        return std::isfinite(x) && x >= 0 ? std::string() : "value " + s + "; accepted a finite number >= 0";
+    },
+    "FINITE >= 0");
 
 // "1,3" → {1, 3}; every item a number in (lo, hi). Throws InputError naming `field` and the range.
 std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi);

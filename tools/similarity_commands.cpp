@@ -111,8 +111,8 @@ std::vector<Command> similarity_commands(CLI::App& app) {
     auto* regress = app.add_subcommand("regress", "recompute Figs. 3-4 and compare with data/reference (CI)");
     config(regress);
     regress->add_option("--reference-dir", o->reference_dir, "folder with fig3.csv and fig4.csv (default: data/reference)");
-    regress->add_option("--rtol", o->tolerance.relative, "relative tolerance")->capture_default_str()->check(CLI::NonNegativeNumber);
-    regress->add_option("--atol", o->tolerance.absolute, "absolute tolerance")->capture_default_str()->check(CLI::NonNegativeNumber);
+    regress->add_option("--rtol", o->tolerance.relative, "relative tolerance")->capture_default_str()->check(finite_non_negative);
+    regress->add_option("--atol", o->tolerance.absolute, "absolute tolerance")->capture_default_str()->check(finite_non_negative);
     regress->add_flag("--update", o->update, "rewrite the references on purpose");
 
     auto* scaling = app.add_subcommand("scaling", "similarity algebra: scale factor of every DEM quantity for a basis");

@@ -164,7 +164,8 @@ std::vector<Command> slump_commands(CLI::App& app) {
         ->delimiter(',');
     slump->add_option("--format", o->format, "text | json")->capture_default_str();
     slump->add_option("--out", o->out_dir, "folder for CSV, VTK and the picture (default: plots/)");
-    slump->add_option("--vtk-every", o->vtk_every, "also write a ParaView series every this many seconds (0: final state only)");
+    slump->add_option("--vtk-every", o->vtk_every, "also write a ParaView series every this many seconds (0: final state only)")
+        ->check(finite_non_negative);
     slump->add_flag("--force-dt", o->force_dt, "accept a time step above 0.2 x the Rayleigh time");
     slump->add_flag("--no-png", o->no_png, "no side-view picture");
     slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");

@@ -1,6 +1,7 @@
 // Subcommands of the coarse-graining study: check-exponent (one k, a verdict and an exit code) and
 // sweep (several k, the best per S_f). Both run the fine reference and the coarse runs side by
 // side, reuse cached runs, and write a table and figures.
+#include <optional>
 #include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -20,7 +21,7 @@ struct Options {
     std::string exponents = "1";
     std::string sfs = "1.4,1.96,2.74,3.84";
     std::vector<std::string> scaled;
-    double tol_slump = -1, tol_spread = -1, tol_profile = -1;  // < 0: the scene's
+    std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
     int jobs = 0, threads = 0;                                 // 0: from the machine
     int replicas = 1;
     std::string cache = default_cache;
@@ -36,10 +37,10 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
     plan.scaled = o.scaled;
     plan.tolerances = plan.fine.tolerances;
-    auto tolerance = [](double given, double& target, const char* field) {
-        if (given == -1) return;
-        require_positive(given, field);
-        target = given;
+    auto tolerance = [](const std::optional<double>& given, double& target, const char* field) {
+        if (!given) return;
+        require_positive(*given, field);
+        target = *given;
     };
     tolerance(o.tol_slump, plan.tolerances.slump, "--tol-slump");
     tolerance(o.tol_spread, plan.tolerances.spread, "--tol-spread");

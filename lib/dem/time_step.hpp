@@ -3,6 +3,8 @@
 // at speed v; Johnson 1985). demscale takes dt ≤ 0.2 T_R as safe. SI units.
 #pragma once
 
+#include <string>
+
 #include "dem/material.hpp"
 
 namespace demscale::dem {
@@ -13,6 +15,7 @@ double hertz_contact_time(double e_star, double r_eff, double m_eff, double impa
 double linear_contact_time(double k, double m_eff, double restitution);
 
 // Throws InputError naming the step and the limit when dt > safety·critical, unless forced.
-void check_time_step(double dt, double critical, double safety, bool force);
+// field: where dt came from, for the message (e.g. "scene.toml:40: run.dt_s").
+void check_time_step(double dt, double critical, double safety, bool force, const std::string& field = "dt");
 
 }  // namespace demscale::dem

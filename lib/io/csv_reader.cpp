@@ -1,5 +1,7 @@
 #include "io/csv_reader.hpp"
 
+#include "io/input_file.hpp"
+
 #include <fstream>
 #include <sstream>
 
@@ -57,11 +59,7 @@ CsvData parse_csv(const std::string& text, const std::string& source) {
 }
 
 CsvData read_csv_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError("reference", path, "a readable CSV file (not found or unreadable)");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return parse_csv(s.str(), path);
+    return parse_csv(read_input_file("input file", path, "a readable CSV file"), path);
 }
 
 }  // namespace demscale::io

@@ -1,5 +1,7 @@
 #include "io/particle_state.hpp"
 
+#include "io/input_file.hpp"
+
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -46,8 +48,7 @@ dem::Particles read_particle_state(const std::string& path) {
 }
 
 dem::Particles read_liggghts_dump(const std::string& path, double density) {
-    std::ifstream in(path);
-    if (!in) throw InputError("--dump", path, "a readable LIGGGHTS dump file");
+    std::istringstream in(read_input_file("--dump", path, "a readable LIGGGHTS dump file"));
     std::string line;
     std::vector<std::string> columns;
     dem::Particles p;

@@ -1,5 +1,7 @@
 #include "io/toml_reader.hpp"
 
+#include "io/input_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -18,9 +20,9 @@ std::string location(const std::string& path, const toml::node* node, const std:
 
 TomlReader::TomlReader(const std::string& path, const std::map<std::string, std::vector<std::string_view>>& schema)
     : path_(path) {
-    if (!std::filesystem::exists(path)) throw InputError("input file", path, "an existing TOML file (not found)");
+    const std::string text = read_input_file("input file", path, "a readable TOML file");
     try {
-        root_ = toml::parse_file(path);
+        root_ = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": (TOML syntax)",
                          std::string(e.description()), "well-formed TOML");
@@ -68,7 +70,7 @@ std::optional<std::string> TomlReader::text(const std::string& dotted) const {
 std::optional<bool> TomlReader::boolean(const std::string& dotted) const {
     const toml::node* n = root_.at_path(dotted).node();
     if (!n) return std::nullopt;
-    if (auto v = n->value<bool>()) return *v;
+    if (auto v = n->value_exact<bool>()) return *v;  // exact: 1 is not a boolean
     throw InputError(location(path_, n, dotted), "(not a boolean)", "true or false");
 }
 

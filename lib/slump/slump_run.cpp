@@ -10,6 +10,7 @@
 #include "bridge/liquid_volume.hpp"
 #include "core/interrupt.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "slump/fill.hpp"
@@ -54,8 +55,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     const std::string key = scene_key(s);
     auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
     if (!phases.resume.empty()) {
-        std::ifstream in(phases.resume, std::ios::binary);
         const std::string accepted = "a checkpoint an interrupted run of this scene wrote (scene key " + key + ")";
+        std::istringstream in(io::read_input_file("--resume", phases.resume.string(), accepted), std::ios::binary);
         char magic[sizeof slump_checkpoint_magic] = {}, stored_key[16] = {};
         in.read(magic, sizeof magic), in.read(stored_key, sizeof stored_key);
         if (!in || std::memcmp(magic, slump_checkpoint_magic, sizeof magic) != 0 || std::string(stored_key, 16) != key)
@@ -172,6 +173,10 @@ CohesionMikamiBridge bridge_for(const SlumpScene& s) {
 
 }  // namespace
 
+void check_slump_time_step(const SlumpScene& s, bool force_dt) {
+    check_time_step(s.dt_s, rayleigh_time(s.material, s.radius_m), 0.2, force_dt, s.dt_field);
+}
+
 double SlumpResult::energy_balance_error() const {
     if (history.size() < 2) return 0;
     const double lost = history.back().energy.dissipated.total() - history.front().energy.dissipated.total();
@@ -180,8 +185,8 @@ double SlumpResult::energy_balance_error() const {
 
 SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                       SlumpPhases phases) {
+    check_slump_time_step(s, force_dt);
     const double critical = rayleigh_time(s.material, s.radius_m);
-    check_time_step(s.dt_s, critical, 0.2, force_dt);
     // A resumed run takes its particles from the checkpoint; the fill only sizes the engine.
     Particles particles = phases.start ? *phases.start : fill_cone(s);
     SlumpResult res;

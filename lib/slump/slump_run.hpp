@@ -56,6 +56,9 @@ struct SlumpPhases {
     std::filesystem::path checkpoint, resume;
 };
 
+// Throws InputError naming the scene's run.dt_s when dt > 0.2 × the Rayleigh time, unless force_dt.
+void check_slump_time_step(const SlumpScene& scene, bool force_dt);
+
 // progress is called about every 5 ms of simulated time. Throws InputError for a time step above
 // 0.2 × the Rayleigh time (unless force_dt) or a checkpoint of another scene, std::runtime_error if
 // the engine stops, and Interrupted (core/interrupt.hpp) after writing the checkpoint on a signal.

@@ -1,7 +1,10 @@
 #include "slump/slump_scene.hpp"
 
 #include <cmath>
+#include <numbers>
 
+#include "bridge/liquid_volume.hpp"
+#include "bridge/validity.hpp"
 #include "core/input_error.hpp"
 #include "io/toml_reader.hpp"
 
@@ -63,6 +66,7 @@ SlumpScene load_slump_scene(const std::string& path) {
         r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
 
     s.dt_s = r.checked("run.dt_s", 1e-5, positive);
+    s.dt_field = r.where("run.dt_s", "run.dt_s");
     s.gravity = r.checked("run.gravity_m_per_s2", 9.81, positive);
     s.settle_time_s = r.checked("run.settle_time_s", 0.3, positive);
     s.spread_time_s = r.checked("run.spread_time_s", 0.4, positive);
@@ -80,6 +84,18 @@ SlumpScene load_slump_scene(const std::string& path) {
     if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))  // the fine reference; coarse runs may go further
         throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
+    if (s.wet) {  // the liquid per bridge (Eq. 5, independent of R) must lie where Mikami's fit holds
+        const bridge::ValidityRange fitted;
+        const double unit_sphere_mass = s.material.density * 4.0 / 3.0 * std::numbers::pi;  // R = 1 m: V̂ = V
+        const double vhat = bridge::liquid_bridge_volume(s.liquid.moisture_content, unit_sphere_mass, s.liquid.density_kg_per_m3);
+        const double vhat_per_moisture = vhat / s.liquid.moisture_content;
+        if (!(vhat >= fitted.vhat_min && vhat <= fitted.vhat_max))
+            throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
+                             "[" + format_short(fitted.vhat_min / vhat_per_moisture, 3) + ", " +
+                                 format_short(fitted.vhat_max / vhat_per_moisture, 3) + "] here: the liquid per bridge V/R^3 = " +
+                                 format_short(vhat, 3) + " (Eq. 5) must lie in the Mikami fit's range [" +
+                                 format_short(fitted.vhat_min, 3) + ", " + format_short(fitted.vhat_max, 3) + "]");
+    }
     if (!(s.fill_height_m <= s.height_m))
         throw InputError(r.where("particles.fill_height_mm", "particles.fill_height_mm"), format_number(s.fill_height_m / mm),
                          "<= cone.height_mm = " + format_number(s.height_m / mm));

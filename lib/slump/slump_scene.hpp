@@ -20,6 +20,7 @@ struct Tolerances {
 
 struct SlumpScene {
     std::string source;
+    std::string dt_field = "run.dt_s";  // where dt came from, for messages ("file:line: run.dt_s")
     std::string name = "kantro-mini-slump";
     // Cone (open frustum on a flat floor).
     double bottom_diameter_m = 0.038, top_diameter_m = 0.019, height_m = 0.057;

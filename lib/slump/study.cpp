@@ -59,8 +59,9 @@ void validate_plan(const StudyPlan& plan) {
     if (plan.threads_per_job < 1) throw InputError("--threads", std::to_string(plan.threads_per_job), ">= 1");
     if (plan.exponents.empty()) throw InputError("--exponents", "(none)", "at least one exponent");
     if (plan.replicas < 0 || plan.replicas > 20) throw InputError("--replicas", std::to_string(plan.replicas), "0 to 20");
+    check_slump_time_step(plan.fine, plan.force_dt);
     for (double k : plan.exponents)
-        for (double sf : plan.scale_factors) coarse_grained(plan.fine, {sf, k, plan.scaled});
+        for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, k, plan.scaled}), plan.force_dt);
 }
 
 Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {

@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# The bad-input catalogue: one case per class of bad input, run against every command that reads
+# that kind of input. Each must exit 2 with one line naming the file (and line), the key, the value
+# and what is accepted, and must leave no output behind (no --out folder, no cache).
+# Usage: bad_input_test.sh CLASS DEMSCALE SOURCE_DIR
+set -u
+class=$1 demscale=$2 src=$3
+work=$(mktemp -d)
+trap 'chmod -R u+rwx "$work" 2>/dev/null; rm -rf "$work"' EXIT
+checked=0
+
+fail() { echo "FAIL [$class]: $*" >&2; exit 1; }
+# refuse PATTERN -- command...: exit 2, PATTERN (grep -E) in the output, one error line, nothing written.
+refuse() {
+  local pattern=$1; shift 2
+  "$@" --out "$work/out" >"$work/log" 2>&1 </dev/null; local rc=$?
+  [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
+  grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
+  [ "$(grep -c 'error' "$work/log")" -eq 1 ] || { cat "$work/log" >&2; fail "not one error line: $*"; }
+  [ ! -e "$work/out" ] || fail "output written despite the error: $*"
+  [ ! -e "$work/cache" ] || fail "cache written despite the error: $*"
+  checked=$((checked + 1))
+}
+# Commands without --out (they print to stdout) get the same checks minus the folder.
+refuse_no_out() {
+  local pattern=$1; shift 2
+  "$@" >"$work/log" 2>&1 </dev/null; local rc=$?
+  [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
+  grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
+  checked=$((checked + 1))
+}
+
+# Every command that reads a scene file, and every command that reads a Table 1 config.
+printf 'ITEM: ATOMS id x y z radius\n1 0 0 0.001 0.001\n' >"$work/dump.txt"
+scene_commands() {  # pattern file [no-pile: pile only measures, it never runs the scene]
+  local p=$1 f=$2 pile=${3:-}
+  refuse "$p" -- "$demscale" slump --scene "$f"
+  refuse "$p" -- "$demscale" check-exponent --exponent 1 --scene "$f" --cache "$work/cache"
+  refuse "$p" -- "$demscale" sweep --scene "$f" --cache "$work/cache"
+  refuse "$p" -- "$demscale" report --scene "$f" --cache "$work/cache"
+  refuse "$p" -- "$demscale" export liggghts --scene "$f"
+  [ "$pile" = no-pile ] || refuse_no_out "$p" -- "$demscale" pile --scene "$f" --dump "$work/dump.txt"
+  refuse_no_out "$p" -- "$demscale" bench --dem --scene "$f"
+}
+config_commands() {  # pattern file
+  local p=$1 f=$2
+  refuse_no_out "$p" -- "$demscale" table --config "$f"
+  refuse "$p" -- "$demscale" curves --figure 3 --config "$f"
+  refuse_no_out "$p" -- "$demscale" regress --config "$f"
+  refuse "$p" -- "$demscale" report --config "$f" --cache "$work/cache"
+}
+scene() { printf '%s\n' "$@" >"$work/scene.toml"; }
+config() { printf '%s\n' "$@" >"$work/config.toml"; }
+small="$src/data/scenes/small_wet.toml"
+
+case $class in
+  missing_file)
+    scene_commands 'scene.toml: accepted a readable TOML file \(not found\)' "$work/none/scene.toml"
+    config_commands 'config.toml: accepted a readable TOML file \(not found\)' "$work/none/config.toml"
+    refuse_no_out '--dump = .*nope.txt: accepted a readable LIGGGHTS dump file \(not found\)' -- "$demscale" pile --dump "$work/nope.txt"
+    refuse 'nope.csv: accepted a readable CSV file \(not found\)' -- "$demscale" slump --scene "$small" --start "$work/nope.csv"
+    refuse '--resume = .*nope.ckpt: accepted a checkpoint .*\(not found\)' -- "$demscale" slump --scene "$small" --resume "$work/nope.ckpt"
+    refuse_no_out 'nope.csv: accepted a readable CSV file \(not found\)' -- "$demscale" bridge --model table --table "$work/nope.csv"
+    refuse 'nope.csv: accepted a readable CSV file \(not found\)' -- "$demscale" bridge-error --quick --table "$work/nope.csv"
+    refuse_no_out 'reference = .*fig3.csv: accepted an existing reference CSV' -- "$demscale" regress --reference-dir "$work/none" ;;
+  unreadable_file)
+    # A directory where a file is expected; and, when not running as root (root reads anything),
+    # a file without read permission.
+    mkdir "$work/dir.toml"
+    scene_commands 'dir.toml: accepted a readable TOML file \(this is a directory\)' "$work/dir.toml"
+    config_commands 'dir.toml: accepted a readable TOML file \(this is a directory\)' "$work/dir.toml"
+    refuse_no_out '--dump = .*dir.toml: accepted a readable LIGGGHTS dump file \(this is a directory\)' -- "$demscale" pile --dump "$work/dir.toml"
+    refuse 'dir.toml: accepted a readable CSV file \(this is a directory\)' -- "$demscale" slump --scene "$small" --start "$work/dir.toml"
+    refuse '--resume = .*dir.toml: .*\(this is a directory\)' -- "$demscale" slump --scene "$small" --resume "$work/dir.toml"
+    refuse_no_out 'dir.toml: accepted a readable CSV file \(this is a directory\)' -- "$demscale" bridge --model table --table "$work/dir.toml"
+    if [ "$(id -u)" -ne 0 ]; then
+      cp "$small" "$work/locked.toml" && chmod 000 "$work/locked.toml"
+      scene_commands 'locked.toml: accepted a readable TOML file \(unreadable' "$work/locked.toml"
+    else
+      echo "note: running as root, the permission-denied half is skipped (root can read any file)"
+    fi ;;
+  malformed_toml)
+    scene '[particles' 'radius_mm = 1'
+    scene_commands 'scene.toml:1: \(TOML syntax\) = .*: accepted well-formed TOML' "$work/scene.toml"
+    config '[particle]' 'radii_mm = [1.0,' ''
+    config_commands 'config.toml:[0-9]+: \(TOML syntax\) = .*: accepted well-formed TOML' "$work/config.toml" ;;
+  unknown_key)
+    scene '[particles]' 'radius = 1'
+    scene_commands 'scene.toml:2: particles.radius = \(unknown key\): .*did you mean particles.radius_mm' "$work/scene.toml"
+    scene '[particle]' 'radius_mm = 1'
+    scene_commands 'scene.toml:1: particle = \(section\): .*did you mean \[particles\]' "$work/scene.toml"
+    config '[particle]' 'radii_mm = [1.0]' 'masses_g = [0.01]' 'radius_mm = 2'
+    config_commands 'config.toml:4: particle.radius_mm = \(unknown key\): .*did you mean particle.radii_mm' "$work/config.toml" ;;
+  wrong_type)
+    scene '[particles]' 'radius_mm = "big"'
+    scene_commands 'scene.toml:2: particles.radius_mm = \(not a number\): accepted a number' "$work/scene.toml"
+    scene '[liquid]' 'wet = 1'
+    scene_commands 'scene.toml:2: liquid.wet = .*: accepted (true or false|a boolean)' "$work/scene.toml"
+    config '[particle]' 'radii_mm = "one"' 'masses_g = [0.01]'
+    config_commands 'config.toml:2: particle.radii_mm = .*: accepted' "$work/config.toml" ;;
+  out_of_range)
+    scene '[particles]' 'radius_mm = -1'
+    scene_commands 'scene.toml:2: particles.radius_mm = -1: accepted a finite number > 0' "$work/scene.toml"
+    scene '[particles]' 'density_kg_per_m3 = 0'
+    scene_commands 'scene.toml:2: particles.density_kg_per_m3 = 0: accepted a finite number > 0' "$work/scene.toml"
+    scene '[liquid]' 'moisture_content = 1'
+    scene_commands 'scene.toml:2: liquid.moisture_content = 1: accepted \(0, 1\)' "$work/scene.toml"
+    scene '[liquid]' 'contact_angle_deg = 90'
+    scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) degrees' "$work/scene.toml"
+    config '[particle]' 'radii_mm = [1.0, -2.0]' 'masses_g = [0.01, 0.07]'
+    config_commands 'config.toml:2: particle.radii_mm\[1\] = -2: accepted a finite number > 0' "$work/config.toml"
+    refuse '--sf = 0: accepted a finite number > 0' -- "$demscale" slump --scene "$small" --sf 0
+    refuse '--sf = "-1": accepted comma-separated numbers in \(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf -1
+    refuse '--sf = "0": accepted comma-separated numbers in \(0, 100\)' -- "$demscale" sweep --sf 0
+    refuse '--sf = "0": accepted comma-separated numbers in \(0, 100\)' -- "$demscale" report --sf 0
+    refuse '--exponent = 25: accepted \(-20, 20\)' -- "$demscale" slump --scene "$small" --exponent 25
+    refuse_no_out '--vhat = -1: accepted a finite number > 0' -- "$demscale" bridge --vhat -1
+    refuse_no_out 'contact_angle_deg = 95: accepted \[0, 90\) degrees' -- "$demscale" bridge --theta 95
+    refuse_no_out 'basis.length = 0: accepted a finite number > 0' -- "$demscale" scaling --length 0
+    refuse '--tol-slump = -1: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-slump -1
+    refuse '--replicas = -1: accepted 0 to 20' -- "$demscale" sweep --replicas -1
+    refuse_no_out '--atol: value -1; accepted a finite number >= 0' -- "$demscale" regress --atol -1 ;;
+  non_finite)
+    for v in nan inf -inf; do
+      scene '[particles]' "radius_mm = $v"
+      scene_commands "scene.toml:2: particles.radius_mm = $v: accepted a finite number" "$work/scene.toml"
+      scene '[run]' "dt_s = $v"
+      scene_commands "scene.toml:2: run.dt_s = $v: accepted a finite number" "$work/scene.toml"
+    done
+    config '[particle]' 'radii_mm = [1.0, nan]' 'masses_g = [0.01, 0.07]'
+    config_commands 'config.toml:2: particle.radii_mm\[1\] = nan: accepted a finite number' "$work/config.toml"
+    refuse '--sf = nan: accepted a finite number > 0' -- "$demscale" slump --scene "$small" --sf nan
+    refuse '--exponent = inf: accepted \(-20, 20\)' -- "$demscale" slump --scene "$small" --exponent inf
+    refuse '--exponent = "nan": accepted comma-separated numbers' -- "$demscale" check-exponent --exponent nan
+    refuse '--exponents = "inf": accepted comma-separated numbers' -- "$demscale" sweep --exponents 1,inf
+    refuse '--exponent = "-inf": accepted comma-separated numbers' -- "$demscale" curves --figure 3 --exponent -inf
+    refuse_no_out '--vhat = nan: accepted a finite number > 0' -- "$demscale" bridge --vhat nan
+    refuse_no_out '--hhat = nan: accepted a finite number' -- "$demscale" bridge --hhat nan
+    refuse_no_out 'basis.length = nan: accepted a finite number > 0' -- "$demscale" scaling --length nan
+    refuse_no_out '--rtol: value nan; accepted a finite number >= 0' -- "$demscale" regress --rtol nan
+    refuse_no_out '--seconds: value nan; accepted a finite number > 0' -- "$demscale" bench --seconds nan
+    refuse '--tol-profile = inf: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-profile inf
+    refuse '--vtk-every: value nan; accepted a finite number >= 0' -- "$demscale" slump --scene "$small" --vtk-every nan ;;
+  inconsistent_scene)
+    scene '[particles]' 'radius_mm = 12'
+    scene_commands 'scene.toml:2: particles.radius_mm = 12: accepted < 4.75 mm \(a quarter of the top opening\)' "$work/scene.toml"
+    scene '[run]' 'dt_s = 1e-3'
+    scene_commands 'scene.toml:2: run.dt_s = 0.001 s: accepted <= .* s \(0.2 x the Rayleigh time .*\); pass --force-dt' "$work/scene.toml" no-pile
+    scene '[liquid]' 'moisture_content = 0.5'
+    scene_commands 'scene.toml:2: liquid.moisture_content = 0.5: accepted \[.*, 0.081\] here: the liquid per bridge V/R\^3 = .* must lie in the Mikami fit' "$work/scene.toml"
+    scene '[cone]' 'top_diameter_mm = 40'
+    scene_commands 'scene.toml:2: cone.top_diameter_mm = 40: accepted < cone.bottom_diameter_mm' "$work/scene.toml"
+    scene '[particles]' 'fill_height_mm = 60'
+    scene_commands 'scene.toml:2: particles.fill_height_mm = 60: accepted <= cone.height_mm = 57' "$work/scene.toml"
+    # A coarse particle that cannot pass the cone's top opening (2 R S_f >= 19 mm).
+    refuse '--sf = 10: accepted .*opening' -- "$demscale" slump --sf 10
+    refuse '--sf = 10: accepted .*opening' -- "$demscale" check-exponent --exponent 1 --sf 10 --cache "$work/cache" ;;
+  *) fail "unknown class" ;;
+esac
+echo "ok [$class]: $checked bad inputs refused with exit 2, a message naming the input, and no output"
