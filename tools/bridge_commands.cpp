@@ -95,16 +95,20 @@ int run_dem_bench(const Options& o) {
     t.columns = {"laws", "particles", "steps", "wall_s", "particle_steps_per_s", "cost_vs_dry_free_rolling"};
     double base = 0;
     for (const bool wet : {false, true})
-        for (const bool rolling : {false, true}) {
-            auto s = slump::load_slump_scene(o.scene);
-            s.wet = wet;
-            s.rolling_resistance = rolling;
-            const auto r = slump::run_slump(s);
-            const double rate = double(r.particles) * double(r.steps) / r.wall_s;
-            if (base == 0) base = rate;
-            t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + (rolling ? "+epsd" : ""),
-                              double(r.particles), double(r.steps), r.wall_s, rate, base / rate});
-        }
+        for (const bool rolling : {false, true})
+            for (const bool ledger : {false, true}) {
+                auto s = slump::load_slump_scene(o.scene);
+                s.wet = wet;
+                s.rolling_resistance = rolling;
+                slump::SlumpPhases phases;
+                phases.energy_ledger = ledger;
+                const auto r = slump::run_slump(s, {}, false, phases);
+                const double rate = double(r.particles) * double(r.steps) / r.wall_s;
+                if (base == 0) base = rate;
+                t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + (rolling ? "+epsd" : "") +
+                                      (ledger ? " +energy ledger" : ""),
+                                  double(r.particles), double(r.steps), r.wall_s, rate, base / rate});
+            }
     std::cout << io::render(t, io::parse_format(o.format, "--format"));
     return 0;
 }

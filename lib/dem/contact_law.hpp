@@ -21,7 +21,6 @@ struct ContactForce {
     Vec3 on_i = Vec3::Zero();       // force on particle i (j gets −on_i)
     Vec3 tangential = Vec3::Zero(); // its tangential part (for torques)
     Vec3 rolling_torque = Vec3::Zero();  // on i (j gets the opposite)
-    Dissipation lost;               // J dissipated in this step, by mechanism
 };
 
 template <class Normal, class Tangential = TangentialNone, class Cohesion = CohesionNone, class Rolling = RollingNone>
@@ -43,31 +42,34 @@ struct ContactLaw {
     // Interaction range beyond touching surfaces, m (0 for dry laws).
     double range() const { return cohesion.range(); }
 
-    ContactForce force(const ContactPair& c, State& s) const {
+    // lost: what this step dissipates is added (Dissipation), or nothing is booked (NoDissipation).
+    template <class Lost>
+    ContactForce force(const ContactPair& c, State& s, Lost& lost) const {
         ContactForce out;
         double fn = 0, elastic = 0;
         if (c.overlap > 0) {
             const double damping = normal.damping_force(c);
             elastic = normal.elastic_force(c);
             fn = elastic + damping;
-            out.lost.normal_damping = -damping * c.v_normal * c.dt;
+            lost.normal_damping += -damping * c.v_normal * c.dt;
         }
-        const double attraction = cohesion.force(c, s.cohesion, out.lost);
+        const double attraction = cohesion.force(c, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
         if (c.overlap > 0) {
-            out.tangential = tangential.force(c, fn, s.tangential, out.lost);
+            out.tangential = tangential.force(c, fn, s.tangential, lost);
             out.on_i += out.tangential;
             // Rolling stiffness uses the secant normal stiffness F_el/δ (as LIGGGHTS' epsd2 does).
-            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling, out.lost);
+            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling, lost);
         } else {  // surfaces apart: tangential and rolling springs are released
-            tangential.release(s.tangential, out.lost);
-            rolling.release(s.rolling, out.lost);
+            tangential.release(s.tangential, lost);
+            rolling.release(s.rolling, lost);
         }
         return out;
     }
 
     // The pair moved out of range: forget its history, booking what its springs still held.
-    void release(State& s, Dissipation& lost) const {
+    template <class Lost>
+    void release(State& s, Lost& lost) const {
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
         s = {};

@@ -25,6 +25,17 @@ struct Dissipation {
     }
 };
 
+// The ledger of an engine built without one: every booking compiles to nothing, so a run that
+// does not ask for energies pays nothing for them (Simulation<Law, false>).
+struct Discard {
+    constexpr Discard& operator+=(double) { return *this; }
+    constexpr Discard& operator-=(double) { return *this; }
+};
+struct NoDissipation {
+    [[no_unique_address]] Discard normal_damping, friction, rolling, bridge, spring_stiffness;
+    constexpr NoDissipation& operator+=(const NoDissipation&) { return *this; }
+};
+
 // Energy held by the contacts now, J.
 struct StoredEnergy {
     double normal = 0;      // normal springs (Hertz: 8/15 E* √R* δ^(5/2))

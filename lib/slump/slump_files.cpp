@@ -24,14 +24,18 @@ std::vector<fs::path> write_slump_files(const SlumpResult& r, const std::string&
 
     io::Table history;
     history.title = "Time history: " + title;
-    history.columns = {"time_s", "height_mm", "spread_max_mm", "kinetic_j", "gravitational_j", "stored_j",
-                       "lost_normal_damping_j", "lost_friction_j", "lost_rolling_j", "lost_bridges_j",
-                       "lost_spring_stiffness_j", "wall_work_j", "balance_j"};
+    history.columns = {"time_s", "height_mm", "spread_max_mm", "kinetic_j", "gravitational_j", "stored_j"};
+    if (r.energy_ledger)  // the losses only when they were booked (slump --energy)
+        for (const char* c : {"lost_normal_damping_j", "lost_friction_j", "lost_rolling_j", "lost_bridges_j",
+                              "lost_spring_stiffness_j", "wall_work_j", "balance_j"})
+            history.columns.push_back(c);
     for (const auto& h : r.history) {
         const auto& e = h.energy;
         const auto& d = e.dissipated;
-        history.rows.push_back({h.time, h.height * 1e3, h.spread_max * 1e3, e.kinetic, e.gravitational, e.stored.total(),
-                                d.normal_damping, d.friction, d.rolling, d.bridge, d.spring_stiffness, e.wall_work, e.balance()});
+        history.rows.push_back({h.time, h.height * 1e3, h.spread_max * 1e3, e.kinetic, e.gravitational, e.stored.total()});
+        if (r.energy_ledger)
+            for (double x : {d.normal_damping, d.friction, d.rolling, d.bridge, d.spring_stiffness, e.wall_work, e.balance()})
+                history.rows.back().push_back(x);
     }
     put(stem + "_history.csv", io::render(history, io::Format::csv));
 

@@ -39,7 +39,7 @@ struct ProtocolState {
 };
 constexpr char slump_checkpoint_magic[16] = "demscale-slump2";
 
-template <class Law>
+template <bool Ledger, class Law>
 SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
                      const SlumpPhases& phases) {
     const auto clock_start = std::chrono::steady_clock::now();
@@ -50,7 +50,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     cone.velocity = Vec3(0, 0, s.lift_speed_m_per_s);
     SlumpResult res;
     res.particles = particles.size();
-    Simulation<Law> sim(std::move(particles), std::move(law), {PlaneWall{}, cone}, Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
+    Simulation<Law, Ledger> sim(std::move(particles), std::move(law), {PlaneWall{}, cone}, Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
     ProtocolState st;
     const std::string key = scene_key(s);
     auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
@@ -178,7 +178,7 @@ void check_slump_time_step(const SlumpScene& s, bool force_dt) {
 }
 
 double SlumpResult::energy_balance_error() const {
-    if (history.size() < 2) return 0;
+    if (!energy_ledger || history.size() < 2) return 0;
     const double lost = history.back().energy.dissipated.total() - history.front().energy.dissipated.total();
     return lost > 0 ? (history.back().energy.balance() - history.front().energy.balance()) / lost : 0;
 }
@@ -190,18 +190,20 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     // A resumed run takes its particles from the checkpoint; the fill only sizes the engine.
     Particles particles = phases.start ? *phases.start : fill_cone(s);
     SlumpResult res;
-    // One explicit switch over the combinations a slump scene can ask for.
+    // One explicit switch over the combinations a slump scene can ask for, each with or without the ledger.
+    auto run = [&](auto law) {
+        return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases)
+                                    : run_with<false>(s, std::move(law), std::move(particles), progress, phases);
+    };
     if (s.wet && s.rolling_resistance)
-        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>(s.material, bridge_for(s)),
-                       std::move(particles), progress, phases);
+        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>(s.material, bridge_for(s)));
     else if (s.wet)
-        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge>(s.material, bridge_for(s)),
-                       std::move(particles), progress, phases);
+        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge>(s.material, bridge_for(s)));
     else if (s.rolling_resistance)
-        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(s.material), std::move(particles),
-                       progress, phases);
+        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(s.material));
     else
-        res = run_with(s, ContactLaw<NormalHertz, TangentialMindlin>(s.material), std::move(particles), progress, phases);
+        res = run(ContactLaw<NormalHertz, TangentialMindlin>(s.material));
+    res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;
     return res;

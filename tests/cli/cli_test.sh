@@ -107,7 +107,16 @@ case $case_name in
     for key in particles steps dt_s wall_s final_height_mm slump_mm spread_d95_mm spread_max_mm repose_angle_deg; do
       grep -q "\"$key\"" "$work/out" || fail "json lacks $key"
     done
-    for f in slump_profile.csv slump_history.csv slump_final.vtp slump_side.png; do [ -s "$work/s/$f" ] || fail "$f missing"; done ;;
+    for f in slump_profile.csv slump_history.csv slump_final.vtp slump_side.png; do [ -s "$work/s/$f" ] || fail "$f missing"; done
+    grep -q '"energy_j"' "$work/out" && fail "energy ledger printed without --energy"
+    # With --energy: the same physics, and a ledger that balances (conservation of energy) to 3 %.
+    cp "$work/out" "$work/plain.json"
+    expect 0 '"energy_balance_error"' -- "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --format json --energy --out "$work/e"
+    diff <(grep -E '"(slump_mm|spread_d95_mm|steps)"' "$work/plain.json") <(grep -E '"(slump_mm|spread_d95_mm|steps)"' "$work/out") >&2 ||
+      fail "the ledger changed the run"
+    err=$(grep '"energy_balance_error"' "$work/out" | sed 's/.*: *//; s/,//')
+    awk -v e="$err" 'BEGIN { exit !(e < 0.03 && e > -0.03) }' || fail "energy balance error $err"
+    head -2 "$work/e/slump_history.csv" | grep -q 'lost_friction_j,lost_rolling_j,lost_bridges_j' || fail "history lacks the ledger" ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"

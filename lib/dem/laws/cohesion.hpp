@@ -21,7 +21,8 @@ namespace demscale::dem {
 struct CohesionNone {
     struct State {};
     double range() const { return 0.0; }
-    double force(const ContactPair&, State&, Dissipation&) const { return 0.0; }
+    template <class Lost>
+    double force(const ContactPair&, State&, Lost&) const { return 0.0; }
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
 };
 
@@ -38,7 +39,8 @@ struct CohesionMikamiBridge {
     double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
 
     // Attractive force magnitude (N) along −n on particle i; lost: what this step dissipates is added.
-    double force(const ContactPair& c, State& s, Dissipation& lost) const {
+    template <class Lost>
+    double force(const ContactPair& c, State& s, Lost& lost) const {
         if (c.wall && !wall) return 0.0;
         const bridge::MikamiCoefficients& law = c.wall ? *wall : k;
         if (c.overlap >= 0 && !s.bridged) {  // forms at contact

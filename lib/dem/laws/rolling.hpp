@@ -19,9 +19,11 @@ namespace demscale::dem {
 struct RollingNone {
     struct State {};
     explicit RollingNone(const Material&) {}
-    Vec3 torque(const ContactPair&, double, double, State&, Dissipation&) const { return Vec3::Zero(); }
+    template <class Lost>
+    Vec3 torque(const ContactPair&, double, double, State&, Lost&) const { return Vec3::Zero(); }
     double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
-    void release(State&, Dissipation&) const {}
+    template <class Lost>
+    void release(State&, Lost&) const {}
 };
 
 struct RollingEpsd {
@@ -39,7 +41,8 @@ struct RollingEpsd {
 
     // normal_stiffness: secant k_n = F_el/δ of the normal law at this overlap (N/m); normal_force: F_n (N);
     // lost: what this step dissipates is added.
-    Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s, Dissipation& lost) const {
+    template <class Lost>
+    Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s, Lost& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
         const double kr = stiffness(c, normal_stiffness);
         s.torque -= c.normal * c.normal.dot(s.torque);  // keep it in the tangent plane
@@ -56,7 +59,8 @@ struct RollingEpsd {
     }
 
     // The surfaces parted: the spring lets go of what it held.
-    void release(State& s, Dissipation& lost) const {
+    template <class Lost>
+    void release(State& s, Lost& lost) const {
         if (s.stiffness == 0) return;  // nothing held
         lost.spring_stiffness += 0.5 * s.torque.squaredNorm() / s.stiffness;
         s = {};

@@ -18,9 +18,11 @@ namespace demscale::dem {
 struct TangentialNone {
     struct State {};
     explicit TangentialNone(const Material&) {}
-    Vec3 force(const ContactPair&, double, State&, Dissipation&) const { return Vec3::Zero(); }
+    template <class Lost>
+    Vec3 force(const ContactPair&, double, State&, Lost&) const { return Vec3::Zero(); }
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
-    void release(State&, Dissipation&) const {}
+    template <class Lost>
+    void release(State&, Lost&) const {}
 };
 
 struct TangentialMindlin {
@@ -36,7 +38,9 @@ struct TangentialMindlin {
     double stiffness(const ContactPair& c) const { return 8.0 * g_star * std::sqrt(c.r_eff * c.overlap); }
 
     // normal_force: the total normal force (for the Coulomb limit); lost: what this step dissipates is added.
-    Vec3 force(const ContactPair& c, double normal_force, State& s, Dissipation& lost) const {
+    // Lost: Dissipation, or NoDissipation to book nothing.
+    template <class Lost>
+    Vec3 force(const ContactPair& c, double normal_force, State& s, Lost& lost) const {
         // Keep the spring in the current tangent plane, at its length (the pair may have rotated).
         const double length2 = s.spring.squaredNorm(), length = std::sqrt(length2);
         s.spring -= c.normal * c.normal.dot(s.spring);
@@ -61,7 +65,8 @@ struct TangentialMindlin {
     }
 
     // The surfaces parted: the spring lets go of what it held.
-    void release(State& s, Dissipation& lost) const {
+    template <class Lost>
+    void release(State& s, Lost& lost) const {
         if (s.stiffness == 0) return;  // nothing held (the common case: a listed pair apart)
         lost.spring_stiffness += 0.5 * s.stiffness * s.spring.squaredNorm();
         s = {};
