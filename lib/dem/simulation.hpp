@@ -48,7 +48,11 @@ public:
     // One velocity-Verlet step: half kick, drift, forces, half kick.
     void step() {
         half_kick();
-        for (std::size_t i = 0; i < p_.size(); ++i) p_.position[i] += dt_ * p_.velocity[i];
+        double probe = 0;  // NaN or inf anywhere makes the sum non-finite: one check per step
+        for (std::size_t i = 0; i < p_.size(); ++i) p_.position[i] += dt_ * p_.velocity[i], probe += p_.position[i].sum();
+        if (!std::isfinite(probe))
+            for (std::size_t i = 0; i < p_.size(); ++i)
+                if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
         if (neighbors_.needs_rebuild(p_)) rebuild();
         compute_forces();
         half_kick();
@@ -338,16 +342,16 @@ private:
         if constexpr (Ledger)
             for (const ThreadLedger& t : thread_ledger_) dissipated_ += t.lost, wall_work_ += t.wall_power * dt_;
         for (std::size_t i = 0; i < p_.size(); ++i)
-            if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i));
+            if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i, "force on"));
     }
 
-    // Why particle i got a non-finite force or torque: its own state, or the first contact (in pair
-    // order, then walls) whose contribution is not finite.
-    std::string non_finite_report(std::size_t i) const {
-        std::string why = "non-finite force on particle " + std::to_string(i) + " at step " + std::to_string(steps_) +
+    // Why particle i got a non-finite force, torque or position ("what": "force on", "position of"):
+    // its own state, or the first contact (in pair order, then walls) whose contribution is not finite.
+    std::string non_finite_report(std::size_t i, const std::string& what) const {
+        std::string why = "non-finite " + what + " particle " + std::to_string(i) + " at step " + std::to_string(steps_) +
                           " (t = " + std::to_string(time_) + " s)";
-        if (!p_.position[i].allFinite() || !p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite())
-            return why + ": its position or velocity is not finite";
+        if (!p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite()) return why + ": its velocity is not finite";
+        if (!p_.position[i].allFinite()) return why + ": its position is not finite";
         for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
             const PairResult& r = results_[incidence_[e] / 2];
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;

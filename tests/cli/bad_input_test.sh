@@ -21,6 +21,20 @@ refuse() {
   [ ! -e "$work/cache" ] || fail "cache written despite the error: $*"
   checked=$((checked + 1))
 }
+# refuse_keeping PATTERN -- command...: as refuse, into an --out folder that already holds earlier
+# results: they must be left exactly as they were, and nothing added.
+refuse_keeping() {
+  local pattern=$1; shift 2
+  rm -rf "$work/kept" && mkdir "$work/kept"
+  for f in slump_profile.csv slump_history.csv check_k1.csv fig3.csv report.html; do echo "earlier $f" >"$work/kept/$f"; done
+  (cd "$work/kept" && ls -l --time-style=+%s.%N && md5sum ./*) >"$work/kept.before"
+  "$@" --out "$work/kept" >"$work/log" 2>&1 </dev/null; local rc=$?
+  [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
+  grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
+  (cd "$work/kept" && ls -l --time-style=+%s.%N && md5sum ./*) >"$work/kept.after"
+  diff "$work/kept.before" "$work/kept.after" >&2 || fail "earlier results changed by a refused run: $*"
+  checked=$((checked + 1))
+}
 # Commands without --out (they print to stdout) get the same checks minus the folder.
 refuse_no_out() {
   local pattern=$1; shift 2
@@ -152,6 +166,12 @@ case $class in
     scene_commands 'scene.toml:2: cone.top_diameter_mm = 40: accepted < cone.bottom_diameter_mm' "$work/scene.toml"
     scene '[particles]' 'fill_height_mm = 60'
     scene_commands 'scene.toml:2: particles.fill_height_mm = 60: accepted <= cone.height_mm = 57' "$work/scene.toml"
+    # Earlier results in the --out folder survive a refused run untouched.
+    refuse_keeping 'scene.toml:2: particles.fill_height_mm = 60' -- "$demscale" slump --scene "$work/scene.toml"
+    refuse_keeping 'scene.toml:2: particles.fill_height_mm = 60' -- "$demscale" check-exponent --exponent 1 --scene "$work/scene.toml" --cache "$work/cache"
+    refuse_keeping 'scene.toml:2: particles.fill_height_mm = 60' -- "$demscale" report --scene "$work/scene.toml" --cache "$work/cache"
+    config '[particle]' 'radii_mm = [1.0, -2.0]' 'masses_g = [0.01, 0.07]'
+    refuse_keeping 'config.toml:2: particle.radii_mm\[1\] = -2' -- "$demscale" curves --figure 3 --config "$work/config.toml"
     # A coarse particle that cannot pass the cone's top opening (2 R S_f >= 19 mm).
     refuse '--sf = 10: accepted .*opening' -- "$demscale" slump --sf 10
     refuse '--sf = 10: accepted .*opening' -- "$demscale" check-exponent --exponent 1 --sf 10 --cache "$work/cache" ;;

@@ -128,6 +128,29 @@ TEST_CASE("Bad scenes stop with the particle and the step", "[dem][errors]") {
     CHECK_THROWS_AS(Particles().add({NAN, 0, 0}, 1e-3, 2500), InputError);
 }
 
+TEST_CASE("A NaN stops the run within the step, naming the particle, the step and the contact", "[dem][errors]") {
+    Material m;
+    m.friction = 0.5;
+    using Law = ContactLaw<NormalHertz, TangentialMindlin>;
+    // Two centres that coincide: the contact normal is 0/0, so the first force is NaN.
+    Particles p;
+    p.add({0, 0, 5e-3}, 1e-3, 2500);
+    p.add({3e-3, 0, 5e-3}, 1e-3, 2500);
+    p.add({3e-3, 0, 5e-3}, 1e-3, 2500);
+    CHECK_THROWS_WITH((Simulation(p, Law(m), {PlaneWall{}}, Vec3::Zero(), 1e-5, 1e-4)),
+                      Catch::Matchers::Contains("non-finite force on particle 1 at step 0") &&
+                          Catch::Matchers::Contains("from its contact with particle 2 (gap -0.002"));
+    // A velocity that became NaN (e.g. set by hand): caught in the next step, with the cause.
+    Particles q;
+    q.add({0, 0, 5e-3}, 1e-3, 2500);
+    q.add({3e-3, 0, 5e-3}, 1e-3, 2500);
+    Simulation sim(q, Law(m), {PlaneWall{}}, Vec3::Zero(), 1e-5, 1e-4);
+    for (int n = 0; n < 10; ++n) sim.step();
+    sim.particles().velocity[1] = Vec3(NAN, 0, 0);
+    CHECK_THROWS_WITH(sim.step(), Catch::Matchers::Contains("non-finite position of particle 1 at step 10") &&
+                                      Catch::Matchers::Contains("its velocity is not finite"));
+}
+
 TEST_CASE("Restart from a checkpoint continues bit for bit", "[dem][restart]") {
     Material m;
     m.youngs_modulus = 5e6;
