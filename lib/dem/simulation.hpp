@@ -339,10 +339,14 @@ private:
             }
         }
         if (!wall_error.empty()) throw std::runtime_error(wall_error);
-        if constexpr (Ledger)
+        if constexpr (Ledger) {
             for (const ThreadLedger& t : thread_ledger_) dissipated_ += t.lost, wall_work_ += t.wall_power * dt_;
+        }
         for (std::size_t i = 0; i < p_.size(); ++i)
             if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i, "force on"));
+        if (Ledger && !std::isfinite(dissipated_.total() + wall_work_))  // after the forces: they name the contact
+            throw std::runtime_error("non-finite energy ledger at step " + std::to_string(steps_) + " (t = " +
+                                     std::to_string(time_) + " s): a contact law booked a non-finite loss");
     }
 
     // Why particle i got a non-finite force, torque or position ("what": "force on", "position of"):
