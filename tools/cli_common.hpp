@@ -32,18 +32,17 @@ io::TableConfig load_config(const std::string& path);
 std::string display_path(const std::string& path);
 
 // Option checks that also refuse NaN and infinity (CLI11's own number checks let NaN through).
-inline const CLI::Validator finite_positive(
-    [](std::string& s) {
-        const double x = std::strtod(s.c_str(), nullptr);
-        return std::isfinite(x) && x > 0 ? std::string() : "value " + s + "; accepted a finite number > 0";
-    },
-    "FINITE > 0");
-inline const CLI::Validator finite_non_negative(
-    [](std::string& s) {
-        const double x = std::strtod(s.c_str(), nullptr);
-        return std::isfinite(x) && x >= 0 ? std::string() : "value " + s + "; accepted a finite number >= 0";
-    },
-    "FINITE >= 0");
+inline CLI::Validator finite_from_zero(bool zero_allowed) {
+    const std::string range = zero_allowed ? "a finite number >= 0" : "a finite number > 0";
+    return CLI::Validator(
+        [=](std::string& s) {
+            const double x = std::strtod(s.c_str(), nullptr);
+            return std::isfinite(x) && (x > 0 || (zero_allowed && x == 0)) ? std::string() : "value " + s + "; accepted " + range;
+        },
+        zero_allowed ? "FINITE >= 0" : "FINITE > 0");
+}
+inline const CLI::Validator finite_positive = finite_from_zero(false);
+inline const CLI::Validator finite_non_negative = finite_from_zero(true);
 
 // "1,3" → {1, 3}; every item a number in (lo, hi). Throws InputError naming `field` and the range.
 std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi);

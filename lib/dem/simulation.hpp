@@ -10,9 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <istream>
-#ifdef _OPENMP
 #include <omp.h>
-#endif
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -33,8 +31,6 @@ namespace demscale::dem {
 template <class Law, bool Ledger = true>
 class Simulation {
 public:
-    static constexpr bool has_ledger = Ledger;
-
     Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
           neighbors_(law_.range(), skin) {
@@ -190,20 +186,6 @@ private:
         Dissipation lost;
         double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
     };
-    static int max_threads() {
-#ifdef _OPENMP
-        return omp_get_max_threads();
-#else
-        return 1;
-#endif
-    }
-    static int thread_index() {
-#ifdef _OPENMP
-        return omp_get_thread_num();
-#else
-        return 0;
-#endif
-    }
 
     void half_kick() {
         for (std::size_t i = 0; i < p_.size(); ++i) {
@@ -269,7 +251,7 @@ private:
         const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p_.size());
         // The ledger is summed per thread and then in thread order: deterministic for a given thread
         // count, and no per-pair storage for it.
-        if constexpr (Ledger) thread_ledger_.assign(static_cast<std::size_t>(max_threads()), ThreadLedger{});
+        if constexpr (Ledger) thread_ledger_.assign(static_cast<std::size_t>(omp_get_max_threads()), ThreadLedger{});
 #pragma omp parallel if (n_pairs > parallel_threshold)
         {
             Lost lost;
@@ -292,7 +274,7 @@ private:
                 out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
                 out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
             }
-            if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(thread_index())].lost += lost;
+            if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())].lost += lost;
         }
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long ii = 0; ii < n; ++ii) {
@@ -334,7 +316,7 @@ private:
                 }
             }
             if constexpr (Ledger) {
-                auto& mine = thread_ledger_[static_cast<std::size_t>(thread_index())];
+                auto& mine = thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())];
                 mine.lost += lost, mine.wall_power += wall_power;
             }
         }

@@ -188,9 +188,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
 
     Section bridges{"Bridge model accuracy", {}};
     timed("bridge models", [&] {
-        const double mass = scene.material.density * 4.0 / 3.0 * M_PI * std::pow(scene.radius_m, 3);
-        const double vhat = bridge::liquid_bridge_volume(scene.liquid.moisture_content, mass, scene.liquid.density_kg_per_m3) /
-                            std::pow(scene.radius_m, 3);
+        const double vhat = slump::bridge_vhat(scene);
         bridges.blocks.push_back(Paragraph{"The scene's liquid gives V^ = " + format_short(vhat) +
                                            " for every S_f (Eq. 5 scales the bridge with the particle mass). The regressions against "
                                            "the exact Young-Laplace bridge there, and over a grid of V^, theta and gap:"});

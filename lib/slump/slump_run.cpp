@@ -161,9 +161,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
 
 // The wet law's bridge: liquid per bridge from Eq. 5 with the particle mass.
 CohesionMikamiBridge bridge_for(const SlumpScene& s) {
-    const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
-    const double volume = bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3);
-    const double vhat = volume / std::pow(s.radius_m, 3);
+    const double vhat = bridge_vhat(s);
     CohesionMikamiBridge c{bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge), s.radius_m,
                            s.liquid.surface_tension_n_per_m, std::nullopt};
     if (s.wet_walls)

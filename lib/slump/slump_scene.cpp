@@ -1,7 +1,6 @@
 #include "slump/slump_scene.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "bridge/liquid_volume.hpp"
 #include "bridge/validity.hpp"
@@ -26,6 +25,11 @@ auto open_interval(double lo, double hi) {
     return [lo, hi](double x, const std::string& f) { require_in_open_interval(x, lo, hi, f); };
 }
 }  // namespace
+
+double bridge_vhat(const SlumpScene& s) {
+    const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
+    return bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3) / std::pow(s.radius_m, 3);
+}
 
 SlumpScene load_slump_scene(const std::string& path) {
     const io::TomlReader r(path, schema);
@@ -86,9 +90,7 @@ SlumpScene load_slump_scene(const std::string& path) {
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
     if (s.wet) {  // the liquid per bridge (Eq. 5, independent of R) must lie where Mikami's fit holds
         const bridge::ValidityRange fitted;
-        const double unit_sphere_mass = s.material.density * 4.0 / 3.0 * std::numbers::pi;  // R = 1 m: V̂ = V
-        const double vhat = bridge::liquid_bridge_volume(s.liquid.moisture_content, unit_sphere_mass, s.liquid.density_kg_per_m3);
-        const double vhat_per_moisture = vhat / s.liquid.moisture_content;
+        const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;
         if (!(vhat >= fitted.vhat_min && vhat <= fitted.vhat_max))
             throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
                              "[" + format_short(fitted.vhat_min / vhat_per_moisture, 3) + ", " +

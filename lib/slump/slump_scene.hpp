@@ -47,6 +47,10 @@ struct SlumpScene {
     Tolerances tolerances;
 };
 
+// The liquid per bridge V/R³ of the scene's wet contacts: Eq. 5 with the particle mass (the same
+// for every S_f, since V scales with the mass).
+double bridge_vhat(const SlumpScene& scene);
+
 // Throws InputError (file, line, key, value, accepted range) for a bad scene.
 SlumpScene load_slump_scene(const std::string& path);
 

@@ -10,38 +10,37 @@ trap 'chmod -R u+rwx "$work" 2>/dev/null; rm -rf "$work"' EXIT
 checked=0
 
 fail() { echo "FAIL [$class]: $*" >&2; exit 1; }
-# refuse PATTERN -- command...: exit 2, PATTERN (grep -E) in the output, one error line, nothing written.
-refuse() {
-  local pattern=$1; shift 2
-  "$@" --out "$work/out" >"$work/log" 2>&1 </dev/null; local rc=$?
+# refused PATTERN command...: exit 2, PATTERN (grep -E) in the output, exactly one error line.
+refused() {
+  local pattern=$1; shift
+  "$@" >"$work/log" 2>&1 </dev/null; local rc=$?
   [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
   grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
   [ "$(grep -c 'error' "$work/log")" -eq 1 ] || { cat "$work/log" >&2; fail "not one error line: $*"; }
-  [ ! -e "$work/out" ] || fail "output written despite the error: $*"
-  [ ! -e "$work/cache" ] || fail "cache written despite the error: $*"
   checked=$((checked + 1))
 }
-# refuse_keeping PATTERN -- command...: as refuse, into an --out folder that already holds earlier
+# refuse PATTERN -- command...: refused, with --out, and nothing written (no folder, no cache).
+refuse() {
+  local pattern=$1; shift 2
+  refused "$pattern" "$@" --out "$work/out"
+  [ ! -e "$work/out" ] || fail "output written despite the error: $*"
+  [ ! -e "$work/cache" ] || fail "cache written despite the error: $*"
+}
+# refuse_keeping PATTERN -- command...: refused, into an --out folder that already holds earlier
 # results: they must be left exactly as they were, and nothing added.
 refuse_keeping() {
   local pattern=$1; shift 2
   rm -rf "$work/kept" && mkdir "$work/kept"
   for f in slump_profile.csv slump_history.csv check_k1.csv fig3.csv report.html; do echo "earlier $f" >"$work/kept/$f"; done
   (cd "$work/kept" && ls -l --time-style=+%s.%N && md5sum ./*) >"$work/kept.before"
-  "$@" --out "$work/kept" >"$work/log" 2>&1 </dev/null; local rc=$?
-  [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
-  grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
+  refused "$pattern" "$@" --out "$work/kept"
   (cd "$work/kept" && ls -l --time-style=+%s.%N && md5sum ./*) >"$work/kept.after"
   diff "$work/kept.before" "$work/kept.after" >&2 || fail "earlier results changed by a refused run: $*"
-  checked=$((checked + 1))
 }
-# Commands without --out (they print to stdout) get the same checks minus the folder.
+# Commands without --out (they print to stdout).
 refuse_no_out() {
   local pattern=$1; shift 2
-  "$@" >"$work/log" 2>&1 </dev/null; local rc=$?
-  [ "$rc" -eq 2 ] || { cat "$work/log" >&2; fail "exit $rc, expected 2: $*"; }
-  grep -Eq -- "$pattern" "$work/log" || { cat "$work/log" >&2; fail "message lacks /$pattern/: $*"; }
-  checked=$((checked + 1))
+  refused "$pattern" "$@"
 }
 
 # Every command that reads a scene file, and every command that reads a Table 1 config.
