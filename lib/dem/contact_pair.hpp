@@ -11,6 +11,7 @@ struct ContactPair {
     double r_eff = 0;      // R* = R_i R_j / (R_i + R_j)   (wall: R_i)
     double m_eff = 0;      // m* = m_i m_j / (m_i + m_j)   (wall: m_i)
     double overlap = 0;    // δ = R_i + R_j − |x_i − x_j|  (> 0 in contact, < 0 a gap)
+    double contact_radius = 0;  // a = √(R* δ) in contact, else 0: Hertz and Mindlin stiffness share it
     Vec3 normal;           // unit vector from j to i
     Vec3 v_rel;            // velocity of i relative to j at the contact point
     double v_normal = 0;   // v_rel · n (< 0 approaching)

@@ -54,7 +54,7 @@ void NeighborList::build(const Particles& p) {
                         const std::size_t c = static_cast<std::size_t>((Z * dims[1] + Y) * dims[0] + X);
                         for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
                             const std::uint32_t j = order[k];
-                            if (j <= i) continue;
+                            if (j <= i || (p.fixed[i] && p.fixed[j])) continue;  // two fixed grains never interact
                             const double reach = p.radius[i] + p.radius[j] + gap;
                             if ((p.position[j] - x).squaredNorm() < reach * reach)
                                 local.emplace_back(static_cast<std::uint32_t>(i), j);
@@ -79,6 +79,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Par
     std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
     for (std::uint32_t i = 0; i < p.size(); ++i)
         for (std::uint32_t j = i + 1; j < p.size(); ++j) {
+            if (p.fixed[i] && p.fixed[j]) continue;
             const double reach = p.radius[i] + p.radius[j] + gap;
             if ((p.position[j] - p.position[i]).squaredNorm() < reach * reach) out.emplace_back(i, j);
         }

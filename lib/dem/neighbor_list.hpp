@@ -15,7 +15,7 @@ class NeighborList {
 public:
     NeighborList(double range, double skin) : range_(range), skin_(skin) {}
 
-    // Pairs (i < j) in ascending order of (i, j).
+    // Pairs (i < j) in ascending order of (i, j); never two fixed spheres.
     void build(const Particles& p);
     bool needs_rebuild(const Particles& p) const;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
@@ -37,7 +37,8 @@ private:
     std::size_t builds_ = 0;
 };
 
-// All pairs whose surface gap is below `gap`, by checking every pair: the reference for tests.
+// All pairs whose surface gap is below `gap` (but no two fixed spheres), by checking every pair:
+// the reference for tests.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, double gap);
 
 }  // namespace demscale::dem

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace demscale::dem {
@@ -20,11 +21,19 @@ struct Particles {
     std::vector<double> mass;            // kg
     std::vector<double> inertia;         // kg m², solid sphere 2/5 m r²
     std::vector<int> species;
+    std::vector<std::uint8_t> fixed;     // 1: held in place (a rough floor's grain), never moves
 
     std::size_t size() const { return radius.size(); }
+    std::size_t mobile_count() const;
 
     // A solid sphere of density rho (kg/m³). Returns its index.
     std::size_t add(const Vec3& x, double r, double rho, const Vec3& v = Vec3::Zero(), int species_id = 0);
+    // A sphere that pushes on the others and never moves (contacts with it see the mobile mass only).
+    std::size_t add_fixed(const Vec3& x, double r, double rho, int species_id = 0);
+    // Appends all of other's spheres (indices follow this set's).
+    void append(const Particles& other);
+    // A copy holding the mobile spheres only, in their order.
+    Particles mobile() const;
 };
 
 }  // namespace demscale::dem

@@ -86,15 +86,18 @@ public:
         e.dissipated = dissipated_;
         e.wall_work = wall_work_;
         for (std::size_t i = 0; i < p_.size(); ++i) {
+            if (p_.fixed[i]) continue;  // no motion, constant height
             e.kinetic += 0.5 * p_.mass[i] * p_.velocity[i].squaredNorm() +
                          0.5 * p_.inertia[i] * p_.angular_velocity[i].squaredNorm();
             e.gravitational -= p_.mass[i] * gravity_.dot(p_.position[i]);
         }
         for (const auto& q : pairs_) {
             const std::size_t i = q.i, j = q.j;
-            if ((p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j] > law_.range()) continue;
-            e.stored += law_.stored_energy(pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j],
-                                                         p_.radius[j], p_.mass[j], false), q.state);
+            const Vec3 d = p_.position[i] - p_.position[j];
+            const double dist = d.norm();
+            if (dist - p_.radius[i] - p_.radius[j] > law_.range()) continue;
+            e.stored += law_.stored_energy(
+                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false), q.state);
         }
         for (std::size_t w = 0; w < walls_.size(); ++w)
             for (std::size_t i = 0; i < p_.size(); ++i)
@@ -114,7 +117,7 @@ public:
         };
         raw(checkpoint_magic, sizeof checkpoint_magic);
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
-        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
+        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species), vec(p_.fixed);
         raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
             raw(&wall_work_, sizeof wall_work_);
         const std::size_t builds = neighbors_.builds();
@@ -140,7 +143,7 @@ public:
         raw(magic, sizeof magic);
         if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0) throw std::runtime_error("not a demscale checkpoint");
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
-        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species);
+        vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species), vec(p_.fixed);
         raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
             raw(&wall_work_, sizeof wall_work_);
         std::size_t builds = 0;
@@ -168,7 +171,7 @@ public:
     }
 
 private:
-    static constexpr char checkpoint_magic[16] = "demscale-ckpt-3";
+    static constexpr char checkpoint_magic[16] = "demscale-ckpt-4";
     // Below this many items a loop runs serially: thread start-up would cost more than the work.
     static constexpr long parallel_threshold = 512;
     // States are written as bytes: plain fixed-size data only.
@@ -189,6 +192,7 @@ private:
 
     void half_kick() {
         for (std::size_t i = 0; i < p_.size(); ++i) {
+            if (p_.fixed[i]) continue;
             p_.velocity[i] += 0.5 * dt_ / p_.mass[i] * p_.force[i];
             p_.angular_velocity[i] += 0.5 * dt_ / p_.inertia[i] * p_.torque[i];
         }
@@ -225,16 +229,23 @@ private:
         results_.assign(pairs_.size(), PairResult{});
     }
 
-    ContactPair pair_geometry(std::size_t i, const Vec3& xj, const Vec3& vj, const Vec3& wj, double rj, double mj,
-                              bool wall) const {
+    // Effective mass of a pair: the mobile one's alone when the other is fixed (like a wall).
+    double pair_mass(std::size_t i, std::size_t j) const {
+        const double mi = p_.mass[i], mj = p_.mass[j];
+        return p_.fixed[i] ? mj : p_.fixed[j] ? mi : mi * mj / (mi + mj);
+    }
+
+    // Contact of particle i with a partner (velocity vj, spin wj, radius rj; 0 for a wall) at
+    // separation d = x_i − x_j, dist = |d| (the caller's range check already needed it).
+    ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
+                              double m_eff, bool wall) const {
         ContactPair c;
-        const Vec3 d = p_.position[i] - xj;
-        const double dist = d.norm();
         const double ri = p_.radius[i];
         c.overlap = ri + rj - dist;
         c.normal = d / dist;
         c.r_eff = wall ? ri : ri * rj / (ri + rj);
-        c.m_eff = wall ? p_.mass[i] : p_.mass[i] * mj / (p_.mass[i] + mj);
+        c.contact_radius = c.overlap > 0 ? std::sqrt(c.r_eff * c.overlap) : 0.0;
+        c.m_eff = m_eff;
         // Contact point at the middle of the overlap; lever arms from each centre.
         const double li = ri - 0.5 * c.overlap, lj = rj - 0.5 * c.overlap;
         c.v_rel = p_.velocity[i] + p_.angular_velocity[i].cross(-li * c.normal) - (vj + wj.cross(lj * c.normal));
@@ -261,13 +272,14 @@ private:
                 PairResult& out = results_[static_cast<std::size_t>(k)];
                 out = PairResult{};
                 const std::size_t i = q.i, j = q.j;
-                const double gap = (p_.position[i] - p_.position[j]).norm() - p_.radius[i] - p_.radius[j];
-                if (gap > reach) {
+                const Vec3 d = p_.position[i] - p_.position[j];
+                const double dist = d.norm();
+                if (dist - p_.radius[i] - p_.radius[j] > reach) {
                     law_.release(q.state, lost);
                     continue;
                 }
-                const ContactPair c = pair_geometry(i, p_.position[j], p_.velocity[j], p_.angular_velocity[j], p_.radius[j],
-                                                    p_.mass[j], false);
+                const ContactPair c =
+                    pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false);
                 const ContactForce f = law_.force(c, q.state, lost);
                 const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
                 out.force_i = f.on_i;
@@ -296,6 +308,7 @@ private:
 #pragma omp for schedule(static)
             for (long ii = 0; ii < n; ++ii) {
                 const std::size_t i = static_cast<std::size_t>(ii);
+                if (p_.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls_.size(); ++w) {
                     const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
                     if (wp.behind) {
@@ -304,11 +317,13 @@ private:
                                      " at step " + std::to_string(steps_);
                         continue;
                     }
-                    if ((p_.position[i] - wp.point).norm() - p_.radius[i] > reach) {
+                    const Vec3 d = p_.position[i] - wp.point;
+                    const double dist = d.norm();
+                    if (dist - p_.radius[i] > reach) {
                         law_.release(wall_state_[w][i], lost);
                         continue;
                     }
-                    const ContactPair c = pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
+                    const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], true);
                     const ContactForce f = law_.force(c, wall_state_[w][i], lost);
                     p_.force[i] += f.on_i;
                     p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
@@ -354,9 +369,12 @@ private:
 
     // The contact geometry of particle i with a wall, if within the law's range of it.
     std::optional<ContactPair> wall_contact(const Wall& wall, std::size_t i) const {
+        if (p_.fixed[i]) return std::nullopt;
         const WallPoint wp = closest_wall_point(wall, p_.position[i], time_);
-        if (wp.behind || (p_.position[i] - wp.point).norm() - p_.radius[i] > law_.range()) return std::nullopt;
-        return pair_geometry(i, wp.point, wp.velocity, Vec3::Zero(), 0.0, 0.0, true);
+        const Vec3 d = p_.position[i] - wp.point;
+        const double dist = d.norm();
+        if (wp.behind || dist - p_.radius[i] > law_.range()) return std::nullopt;
+        return pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], true);
     }
 
     Particles p_;

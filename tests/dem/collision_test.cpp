@@ -112,6 +112,40 @@ TEST_CASE("Sphere resting on a plane: static overlap equals mg/k and the Hertz s
     }
 }
 
+TEST_CASE("A fixed sphere never moves; others bounce off it with the law's restitution and rest on it at the Hertz overlap",
+          "[dem][contact][fixed]") {
+    Material m;
+    m.density = rho;
+    m.restitution = 0.5;
+    // Head-on at 0.5 m/s: the contact must see the mobile mass alone (like a wall). Were it the
+    // two-body m/2, the dashpot would be sqrt(2) too weak and the rebound well above e.
+    {
+        Particles p;
+        p.add_fixed({0, 0, 0}, r, rho);
+        p.add({0, 0, 2 * r + 1e-6}, r, rho, {0, 0, -0.5});
+        Simulation sim(p, ContactLaw<NormalHertz>(m), {}, Vec3::Zero(), 2e-7, 0.1 * r);
+        for (int n = 0; n < 200000 && sim.particles().velocity[1].z() <= 0; ++n) sim.step();
+        for (int n = 0; n < 2000; ++n) sim.step();  // clear of the contact
+        CHECK(sim.particles().velocity[1].z() / 0.5 == Approx(0.5).epsilon(0.02));
+        CHECK(sim.particles().position[0] == Vec3::Zero());
+        CHECK(sim.particles().velocity[0] == Vec3::Zero());
+    }
+    // Resting on top under gravity: m g = 4/3 E* sqrt(R*) delta^(3/2) with R* = R/2 (two equal spheres).
+    {
+        Particles p;
+        p.add_fixed({0, 0, 0}, r, rho);
+        p.add({0, 0, 2 * r}, r, rho);
+        Simulation sim(p, ContactLaw<NormalHertz>(m), {}, Vec3(0, 0, -9.81), 1e-6, 0.1 * r);
+        for (int n = 0; n < 100000; ++n) sim.step();
+        const double mass = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
+        const double expected = std::pow(3 * mass * 9.81 / (4 * e_star * std::sqrt(0.5 * r)), 2.0 / 3.0);
+        CHECK(2 * r - sim.particles().position[1].z() == Approx(expected).epsilon(1e-4));
+        CHECK(sim.particles().position[0] == Vec3::Zero());
+        CHECK(sim.energy().kinetic < 1e-15);
+    }
+}
+
 TEST_CASE("Time-step criteria: Rayleigh time of physics.md and refusal of a too large step", "[dem][timestep]") {
     // physics.md §6 [V]: R = 1 mm, rho = 2500, E = 1e8 Pa, nu = 0.22 -> T_R = 27 us; E = 1e7 -> 86 us.
     Material m;

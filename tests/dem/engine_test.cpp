@@ -34,9 +34,12 @@ Particles random_cloud(int n, double side, unsigned seed, double speed) {
 
 TEST_CASE("Neighbour list equals brute force, also after many rebuilds", "[dem][neighbors]") {
     Particles p = random_cloud(400, 0.03, 7, 0);
+    for (std::size_t k = 0; k < p.size(); k += 3) p.fixed[k] = 1;  // fixed spheres: never paired with each other
     NeighborList list(0.3e-3, 0.2e-3);
     list.build(p);
     CHECK(list.pairs() == brute_force_pairs(p, list.cutoff_gap()));
+    CHECK(std::none_of(list.pairs().begin(), list.pairs().end(), [&](auto q) { return p.fixed[q.first] && p.fixed[q.second]; }));
+    CHECK(std::any_of(list.pairs().begin(), list.pairs().end(), [&](auto q) { return p.fixed[q.first] != p.fixed[q.second]; }));
     // Random walks: whenever the list says it is still valid, every pair within the interaction range is in it.
     std::mt19937 rng(11);
     std::normal_distribution<double> step(0, 0.02e-3);
@@ -158,6 +161,7 @@ TEST_CASE("Restart from a checkpoint continues bit for bit", "[dem][restart]") {
     m.rolling_friction = 0.1;
     using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>;
     Particles p = random_cloud(120, 0.01, 9, 0.3);
+    for (std::size_t k = 0; k < p.size(); k += 10) p.fixed[k] = 1, p.velocity[k].setZero();  // held in place, also after the restart
     const std::vector<Wall> walls{PlaneWall{Vec3(0, 0, -0.002), Vec3::UnitZ()}};
     Simulation straight(p, Law(m), walls, Vec3(0, 0, -9.81), 2e-6, 0.2e-3);
     for (int n = 0; n < 4000; ++n) straight.step();
@@ -176,6 +180,7 @@ TEST_CASE("Restart from a checkpoint continues bit for bit", "[dem][restart]") {
     CHECK(std::memcmp(a.position.data(), b.position.data(), a.size() * sizeof(Vec3)) == 0);
     CHECK(std::memcmp(a.angular_velocity.data(), b.angular_velocity.data(), a.size() * sizeof(Vec3)) == 0);
     CHECK(resumed.neighbors().builds() == straight.neighbors().builds());
+    for (std::size_t k = 0; k < p.size(); k += 10) CHECK(b.position[k] == p.position[k]);
     std::stringstream garbage("not a checkpoint at all, just text");
     CHECK_THROWS_WITH(resumed.load(garbage), Catch::Matchers::Contains("not a demscale checkpoint"));
 }

@@ -18,7 +18,7 @@ struct NormalHertz {
     explicit NormalHertz(const Material& m) : e_star(effective_youngs(m)), beta(damping_ratio(m.restitution)) {}
 
     // Tangent normal stiffness S_n = dF_el/dδ, which scales the damping.
-    double stiffness(const ContactPair& c) const { return 2.0 * e_star * std::sqrt(c.r_eff * c.overlap); }
+    double stiffness(const ContactPair& c) const { return 2.0 * e_star * c.contact_radius; }
     double elastic_force(const ContactPair& c) const {
         return 4.0 / 3.0 * e_star * std::sqrt(c.r_eff) * c.overlap * std::sqrt(c.overlap);
     }

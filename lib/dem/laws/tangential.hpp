@@ -35,17 +35,20 @@ struct TangentialMindlin {
     explicit TangentialMindlin(const Material& m)
         : g_star(effective_shear(m)), beta(damping_ratio(m.restitution)), mu(m.friction) {}
 
-    double stiffness(const ContactPair& c) const { return 8.0 * g_star * std::sqrt(c.r_eff * c.overlap); }
+    double stiffness(const ContactPair& c) const { return 8.0 * g_star * c.contact_radius; }
 
     // normal_force: the total normal force (for the Coulomb limit); lost: what this step dissipates is added.
     // Lost: Dissipation, or NoDissipation to book nothing.
     template <class Lost>
     Vec3 force(const ContactPair& c, double normal_force, State& s, Lost& lost) const {
         // Keep the spring in the current tangent plane, at its length (the pair may have rotated).
-        const double length2 = s.spring.squaredNorm(), length = std::sqrt(length2);
-        s.spring -= c.normal * c.normal.dot(s.spring);
-        const double projected = s.spring.norm();
-        if (projected > 0) s.spring *= length / projected;
+        const double length2 = s.spring.squaredNorm();
+        if (length2 > 0) {  // a fresh contact has none to turn
+            const double length = std::sqrt(length2);
+            s.spring -= c.normal * c.normal.dot(s.spring);
+            const double projected = s.spring.norm();
+            if (projected > 0) s.spring *= length / projected;
+        }
         const double st = stiffness(c);
         const double stored_before = 0.5 * st * length2;  // the rotation kept the length
         lost.spring_stiffness += 0.5 * (s.stiffness - st) * length2;
