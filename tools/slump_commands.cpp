@@ -86,6 +86,7 @@ int run_slump_command(const Options& o) {
     j["sf"] = o.sf;
     j["exponent"] = o.exponent;
     j["particles"] = r.particles;
+    j["floor"] = scene.rough_floor ? "rough" : "flat";
     j["steps"] = r.steps;
     j["dt_s"] = r.dt;
     j["critical_dt_s"] = r.critical_dt;
@@ -142,7 +143,7 @@ int run_export_liggghts(const Options& o) {
 int run_pile(const Options& o) {
     const auto scene = slump::load_slump_scene(o.scene);
     const auto p = io::read_liggghts_dump(o.dump, scene.material.density);
-    const auto m = slump::measure_pile(p);
+    const auto m = slump::measure_pile(p, slump::lone_sphere_top(scene));
     nlohmann::ordered_json j;
     j["particles"] = p.size();
     j["final_height_mm"] = m.height * 1e3;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/atomic_file.hpp"
+#include "slump/fill.hpp"
 
 namespace demscale::io {
 
@@ -55,7 +56,8 @@ std::string cone_stl(const slump::SlumpScene& sc) {
     return s.str();
 }
 
-std::string deck(const slump::SlumpScene& sc, std::size_t particles) {
+// particles: the pile's count; atoms after it are the rough floor's grains, which only the pile touches.
+std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains) {
     const auto& m = sc.material;
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
     const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
@@ -64,8 +66,13 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles) {
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";
     if (sc.wet) s << "# NOTE: the demscale scene is wet; LIGGGHTS-PUBLIC has no Mikami bridge, so this deck is DRY.\n";
+    // Everything that moves acts on group `pile`; the floor's grains (if any) are never integrated.
+    const std::string pile = grains == 0 ? "all" : "pile";
     s << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\nunits si\n"
-      << "read_data particles.data\n"
+      << "read_data particles.data\n";
+    if (grains > 0) s << "group pile id <> 1 " << particles << "\n# atoms " << particles + 1 << " to " << particles + grains
+                      << ": the rough floor's grains, held in place (no integration)\n";
+    s
       << "neighbor " << sc.skin_m << " bin\nneigh_modify delay 0\n"
       << "fix m1 all property/global youngsModulus peratomtype " << m.youngs_modulus << "\n"
       << "fix m2 all property/global poissonsRatio peratomtype " << m.poisson_ratio << "\n"
@@ -74,17 +81,17 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles) {
       << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n"
       << "pair_style gran " << laws << "\npair_coeff * *\n"
       << "timestep " << sc.dt_s << "\n"
-      << "fix gravi all gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"
+      << "fix gravi " << pile << " gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"
       << "fix cone all mesh/surface file cone.stl type 1\n"
-      << "fix walls all wall/gran " << laws << " mesh n_meshes 1 meshes cone\n"
-      << "fix floor all wall/gran " << laws << " primitive type 1 zplane 0.0\n"
-      << "fix integr all nve/sphere\n"
+      << "fix walls " << pile << " wall/gran " << laws << " mesh n_meshes 1 meshes cone\n"
+      << "fix floor " << pile << " wall/gran " << laws << " primitive type 1 zplane 0.0\n"
+      << "fix integr " << pile << " nve/sphere\n"
       << "thermo " << std::max(1L, (lift_steps + spread_steps) / 20) << "\nthermo_style custom step atoms ke\n"
       << "# lift the cone " << sc.lift_height_m * 1e3 << " mm at " << sc.lift_speed_m_per_s << " m/s, then remove it\n"
       << "fix lift all move/mesh mesh cone linear 0.0 0.0 " << sc.lift_speed_m_per_s << "\n"
       << "run " << lift_steps << "\n"
       << "unfix lift\nunfix walls\nunfix cone\n"
-      << "dump final all custom " << lift_steps + spread_steps << " final.dump id type x y z radius\n"
+      << "dump final " << pile << " custom " << lift_steps + spread_steps << " final.dump id type x y z radius\n"
       << "run " << spread_steps << "\n";
     return s.str();
 }
@@ -92,9 +99,12 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles) {
 }  // namespace
 
 std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled, const fs::path& out_dir) {
-    write_file_atomically(out_dir / "particles.data", data_file(settled));
+    dem::Particles all = settled.mobile();
+    const std::size_t pile = all.size();
+    all.append(slump::floor_grains(scene));
+    write_file_atomically(out_dir / "particles.data", data_file(all));
     write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
-    write_file_atomically(out_dir / "in.slump", deck(scene, settled.size()));
+    write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile));
     return {out_dir / "in.slump", out_dir / "particles.data", out_dir / "cone.stl"};
 }
 

@@ -1,7 +1,8 @@
 // Export of a slump scene to LIGGGHTS (3.8, Debian's liggghts): the settled particles as a data
 // file (atom_style granular), the cone as an STL mesh, and an input deck with the same laws
 // (hertz, tangential history, rolling_friction epsd2), parameters, time step, lift and spread, ending
-// in a dump of the final pile. LIGGGHTS-PUBLIC has no Mikami bridge: a wet scene is exported dry,
+// in a dump of the final pile. A rough floor's grains follow the pile in the data file, in a group
+// that is never integrated (held in place). LIGGGHTS-PUBLIC has no Mikami bridge: a wet scene is exported dry,
 // and the deck says so.
 #pragma once
 

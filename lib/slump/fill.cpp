@@ -12,8 +12,9 @@ dem::Particles fill_cone(const SlumpScene& s) {
     // ±0.5 % per axis: two neighbours at 2.02 R approach by at most 2√3·0.005 R, so never overlap.
     std::uniform_real_distribution<double> jitter(-0.005 * r, 0.005 * r);
     dem::Particles p;
+    const double first = s.rough_floor ? 2.03 * r : 1.01 * r;  // clear of the floor's grains
     for (int k = 0;; ++k) {
-        const double z = 1.01 * r + k * layer;
+        const double z = first + k * layer;
         if (z + r > s.fill_height_m) break;
         // Inside radius of the cone at this height, less the sphere and a clearance.
         const double inner = 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * (z + r) / s.height_m;
@@ -30,6 +31,26 @@ dem::Particles fill_cone(const SlumpScene& s) {
                 p.add({x + jitter(rng), y + jitter(rng), z + jitter(rng)}, r, s.material.density);
             }
     }
+    return p;
+}
+
+}  // namespace demscale::slump
+
+namespace demscale::slump {
+
+dem::Particles floor_grains(const SlumpScene& s) {
+    dem::Particles p;
+    if (!s.rough_floor) return p;
+    const double r = s.radius_m, pitch = 2 * r, row_step = pitch * std::sqrt(3.0) / 2, reach = 0.5 * s.rough_floor_diameter_m;
+    std::mt19937 rng(s.seed + 7919u);  // its own stream: the fill's jitter stays the same
+    std::uniform_real_distribution<double> jitter(-0.05 * r, 0.05 * r);
+    const int rows = static_cast<int>(reach / row_step) + 1, cols = static_cast<int>(reach / pitch) + 1;
+    for (int row = -rows; row <= rows; ++row)
+        for (int col = -cols; col <= cols; ++col) {
+            const double x = col * pitch + (row % 2 != 0 ? 0.5 * pitch : 0.0), y = row * row_step;
+            if (std::hypot(x, y) > reach) continue;
+            p.add_fixed({x + jitter(rng), y + jitter(rng), 0.0}, r, s.material.density, 1);
+        }
     return p;
 }
 

@@ -6,7 +6,12 @@
 
 namespace demscale::slump {
 
-PileMeasures measure_pile(const dem::Particles& p) {
+double lone_sphere_top(const SlumpScene& s) {
+    return s.rough_floor ? (1 + 2 * std::sqrt(2.0 / 3.0)) * s.radius_m : 2 * s.radius_m;
+}
+
+PileMeasures measure_pile(const dem::Particles& p, double foot) {
+    if (p.mobile_count() != p.size()) return measure_pile(p.mobile(), foot);
     PileMeasures m;
     if (p.size() == 0) return m;
     const double r = p.radius[0];
@@ -32,10 +37,11 @@ PileMeasures measure_pile(const dem::Particles& p) {
         const std::size_t b = std::min(bins - 1, static_cast<std::size_t>(rho[i] / bin));
         m.profile[b].height = std::max(m.profile[b].height, p.position[i].z() + p.radius[i]);
     }
-    // Flank: bins whose height lies between 20 % and 80 % of the pile's height.
+    // Flank: bins whose height above the foot lies between 20 % and 80 % of the pile's.
     double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    const double rise = m.height - foot;
     for (const auto& q : m.profile)
-        if (q.height > 0.2 * m.height && q.height < 0.8 * m.height) {
+        if (q.height - foot > 0.2 * rise && q.height - foot < 0.8 * rise) {
             sx += q.radius, sy += q.height, sxx += q.radius * q.radius, sxy += q.radius * q.height, n += 1;
         }
     if (n >= 2 && n * sxx - sx * sx > 0) {

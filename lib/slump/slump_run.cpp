@@ -22,10 +22,13 @@ namespace {
 
 using namespace dem;
 
-double max_speed(const Particles& p) {
-    double v = 0;
-    for (const auto& x : p.velocity) v = std::max(v, x.norm());
-    return v;
+// Every particle slower than `speed` (m/s)? Stops at the first that is not: while the pile moves,
+// that is within the first few.
+bool all_slower_than(const Particles& p, double speed) {
+    const double limit = speed * speed;
+    for (const auto& v : p.velocity)
+        if (!(v.squaredNorm() < limit)) return false;
+    return true;
 }
 
 // Where the protocol stands: with the engine's own checkpoint, all a resumed run needs.
@@ -50,6 +53,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     cone.velocity = Vec3(0, 0, s.lift_speed_m_per_s);
     SlumpResult res;
     res.particles = particles.size();
+    particles.append(floor_grains(s));  // after the pile: pile indices are the same as without them
     Simulation<Law, Ledger> sim(std::move(particles), std::move(law), {PlaneWall{}, cone}, Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
     ProtocolState st;
     const std::string key = scene_key(s);
@@ -75,7 +79,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     auto sample = [&] {
         const auto& p = sim.particles();
         double top = 0, spread = 0;
-        for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t i = 0; i < res.particles; ++i)  // the pile, not the floor's grains
             top = std::max(top, p.position[i].z() + p.radius[i]), spread = std::max(spread, std::hypot(p.position[i].x(), p.position[i].y()));
         res.history.push_back({sim.time(), top, 2 * (spread + s.radius_m), sim.energy()});
     };
@@ -112,7 +116,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
             if (interrupt_requested()) stop_here();
             sim.step();
             tick(phase, end);
-            if (max_speed(sim.particles()) < s.rest_speed_m_per_s) {
+            if (all_slower_than(sim.particles(), s.rest_speed_m_per_s)) {
                 if (st.still_since < 0) st.still_since = sim.time();
                 if (sim.time() - st.still_since >= s.rest_duration_s) return true;
             } else {
@@ -125,12 +129,12 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
         if (!phases.start) st.settled = run_until_rest("settle", s.settle_time_s);
         st.settle_end = sim.time();
-        st.initial_height = measure_pile(sim.particles()).height;
+        st.initial_height = measure_pile(sim.particles(), lone_sphere_top(s)).height;
         if (phases.settle_only) {
             res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
             res.steps = sim.steps();
-            res.final = measure_pile(sim.particles());
-            res.final_state = sim.particles();
+            res.final = measure_pile(sim.particles(), lone_sphere_top(s));
+            res.final_state = sim.particles().mobile();
             res.wall_s = wall_time();
             return res;
         }
@@ -153,8 +157,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height, res.lift_end = st.lifted_at;
     res.end = sim.time();
     res.steps = sim.steps();
-    res.final = measure_pile(sim.particles());
-    res.final_state = sim.particles();
+    res.final = measure_pile(sim.particles(), lone_sphere_top(s));
+    res.final_state = sim.particles().mobile();
     res.wall_s = wall_time();
     return res;
 }

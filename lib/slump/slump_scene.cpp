@@ -14,6 +14,7 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"scene", {"name"}},
     {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
     {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed"}},
+    {"floor", {"rough", "rough_diameter_mm"}},
     {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
                 "bridge_variant"}},
@@ -49,6 +50,9 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.seed = static_cast<unsigned>(r.checked("particles.seed", 1, [](double x, const std::string& f) {
         if (!(x >= 0 && x < 4294967296.0 && std::floor(x) == x)) throw InputError(f, format_number(x), "an integer in [0, 2^32)");
     }));
+
+    s.rough_floor = r.boolean("floor.rough").value_or(false);
+    s.rough_floor_diameter_m = r.checked("floor.rough_diameter_mm", 150, positive) * mm;
 
     s.material.youngs_modulus = r.checked("contact.youngs_modulus_pa", 5e6, positive);
     s.material.poisson_ratio = r.checked("contact.poisson_ratio", 0.3, open_interval(-1, 0.5));
@@ -98,6 +102,9 @@ SlumpScene load_slump_scene(const std::string& path) {
                                  format_short(vhat, 3) + " (Eq. 5) must lie in the Mikami fit's range [" +
                                  format_short(fitted.vhat_min, 3) + ", " + format_short(fitted.vhat_max, 3) + "]");
     }
+    if (s.rough_floor && !(s.rough_floor_diameter_m >= s.bottom_diameter_m))
+        throw InputError(r.where("floor.rough_diameter_mm", "floor.rough_diameter_mm"), format_number(s.rough_floor_diameter_m / mm),
+                         ">= cone.bottom_diameter_mm = " + format_number(s.bottom_diameter_m / mm) + " (the rough disc carries the fill)");
     if (!(s.fill_height_m <= s.height_m))
         throw InputError(r.where("particles.fill_height_mm", "particles.fill_height_mm"), format_number(s.fill_height_m / mm),
                          "<= cone.height_mm = " + format_number(s.height_m / mm));

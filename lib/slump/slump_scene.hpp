@@ -31,6 +31,10 @@ struct SlumpScene {
     unsigned seed = 1;
     dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0};
     bool rolling_resistance = true;  // EPSD (Ai et al. 2011, epsd2)
+    // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
+    // plane, on a jittered hexagonal lattice covering a disc (the usual base of repose-angle tests).
+    bool rough_floor = false;
+    double rough_floor_diameter_m = 0.15;
     // Liquid bridges.
     bool wet = true;
     bool wet_walls = false;  // Mikami's sphere–wall fit, unverified (2.5× the sphere–plane bound)

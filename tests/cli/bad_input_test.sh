@@ -163,6 +163,8 @@ case $class in
     scene_commands 'scene.toml:2: liquid.moisture_content = 0.5: accepted \[.*, 0.081\] here: the liquid per bridge V/R\^3 = .* must lie in the Mikami fit' "$work/scene.toml"
     scene '[cone]' 'top_diameter_mm = 40'
     scene_commands 'scene.toml:2: cone.top_diameter_mm = 40: accepted < cone.bottom_diameter_mm' "$work/scene.toml"
+    scene '[floor]' 'rough = true' 'rough_diameter_mm = 30'
+    scene_commands 'scene.toml:3: floor.rough_diameter_mm = 30: accepted >= cone.bottom_diameter_mm = 38' "$work/scene.toml"
     scene '[particles]' 'fill_height_mm = 60'
     scene_commands 'scene.toml:2: particles.fill_height_mm = 60: accepted <= cone.height_mm = 57' "$work/scene.toml"
     # Earlier results in the --out folder survive a refused run untouched.
