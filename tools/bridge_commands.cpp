@@ -86,8 +86,8 @@ int run_bridge_error(const Options& o) {
     return 0;
 }
 
-// Cost of each optional contact law on one slump scene: the same run dry and wet, without and with
-// rolling resistance (each its own compiled engine).
+// Cost of each optional contact law on one slump scene: the same run dry and wet, without rolling
+// resistance and with each rolling law (each its own compiled engine).
 int run_dem_bench(const Options& o) {
     io::Table t;
     t.title = "DEM slump run (fill, settle, lift, spread) under each combination of optional laws";
@@ -95,17 +95,18 @@ int run_dem_bench(const Options& o) {
     t.columns = {"laws", "particles", "steps", "wall_s", "particle_steps_per_s", "cost_vs_dry_free_rolling"};
     double base = 0;
     for (const bool wet : {false, true})
-        for (const bool rolling : {false, true})
+        for (const char* rolling : {"", "+epsd", "+cdt"})
             for (const bool ledger : {false, true}) {
                 auto s = slump::load_slump_scene(o.scene);
                 s.wet = wet;
-                s.rolling_resistance = rolling;
+                s.rolling_resistance = *rolling != 0;
+                s.rolling_model = std::string(rolling) == "+cdt" ? slump::RollingModel::constant_torque : slump::RollingModel::epsd;
                 slump::SlumpPhases phases;
                 phases.energy_ledger = ledger;
                 const auto r = slump::run_slump(s, {}, false, phases);
                 const double rate = double(r.particles) * double(r.steps) / r.wall_s;
                 if (base == 0) base = rate;
-                t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + (rolling ? "+epsd" : "") +
+                t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + rolling +
                                       (ledger ? " +energy ledger" : ""),
                                   double(r.particles), double(r.steps), r.wall_s, rate, base / rate});
             }

@@ -12,6 +12,7 @@ struct Material {
     double friction = 0.5;         // Coulomb sliding friction μ
     double rolling_friction = 0.1; // μ_r
     double linear_stiffness = 0;   // N/m, for the linear spring law (0: unused)
+    double tangential_stiffness_ratio = 2.0 / 7.0;  // κ = k_t / k_n of the linear tangential spring
 };
 
 // E* = E / (2(1 − ν²)) for two spheres of one material; G* = E / (4(2 − ν)(1 + ν)).

@@ -61,7 +61,8 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     const auto& m = sc.material;
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
     const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
-    const std::string laws = "model hertz tangential history" + std::string(sc.rolling_resistance ? " rolling_friction epsd2" : "");
+    const std::string rolling = sc.rolling_model == slump::RollingModel::constant_torque ? " rolling_friction cdt" : " rolling_friction epsd2";
+    const std::string laws = "model hertz tangential history" + (sc.rolling_resistance ? rolling : std::string());
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";

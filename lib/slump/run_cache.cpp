@@ -32,7 +32,9 @@ std::string canonical(const SlumpScene& s) {
     add("density", m.density), add("E", m.youngs_modulus), add("nu", m.poisson_ratio), add("e", m.restitution);
     add("mu", m.friction), add("mu_r", m.rolling_friction), add("k_lin", m.linear_stiffness);
     add("rolling", s.rolling_resistance), add("wet", s.wet), add("wet_walls", s.wet_walls);
-    if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);  // absent when flat: older keys stay valid
+    // Absent at their defaults, so that keys of scenes from before they existed stay valid.
+    if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);
+    if (s.rolling_model != RollingModel::epsd) add("rolling_model", static_cast<double>(s.rolling_model));
     add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
     add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
     add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));

@@ -197,14 +197,13 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
         return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases)
                                     : run_with<false>(s, std::move(law), std::move(particles), progress, phases);
     };
-    if (s.wet && s.rolling_resistance)
-        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>(s.material, bridge_for(s)));
-    else if (s.wet)
-        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge>(s.material, bridge_for(s)));
-    else if (s.rolling_resistance)
-        res = run(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(s.material));
-    else
-        res = run(ContactLaw<NormalHertz, TangentialMindlin>(s.material));
+    auto with_rolling = [&]<class Cohesion>(Cohesion cohesion) {
+        if (!s.rolling_resistance) return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion>(s.material, cohesion));
+        if (s.rolling_model == RollingModel::constant_torque)
+            return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingConstantTorque>(s.material, cohesion));
+        return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd>(s.material, cohesion));
+    };
+    res = s.wet ? with_rolling(bridge_for(s)) : with_rolling(CohesionNone{});
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

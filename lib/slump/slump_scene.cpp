@@ -15,7 +15,8 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
     {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed"}},
     {"floor", {"rough", "rough_diameter_mm"}},
-    {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance"}},
+    {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
+                 "rolling_model"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
                 "bridge_variant"}},
     {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "rest_speed_m_per_s", "rest_duration_s", "skin_mm"}},
@@ -62,6 +63,11 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.material.friction = r.checked("contact.friction", 0.5, open_interval(0, 10));
     s.material.rolling_friction = r.checked("contact.rolling_friction", 0.1, open_interval(0, 10));
     s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
+    if (auto m = r.text("contact.rolling_model")) {
+        if (*m == "epsd") s.rolling_model = RollingModel::epsd;
+        else if (*m == "constant_torque") s.rolling_model = RollingModel::constant_torque;
+        else throw InputError(r.where("contact.rolling_model", "contact.rolling_model"), *m, "\"epsd\" or \"constant_torque\"");
+    }
 
     s.wet = r.boolean("liquid.wet").value_or(true);
     s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);

@@ -18,6 +18,9 @@ struct Tolerances {
     double profile = 0.15;  // ‖h̄ − h‖₂ / ‖h‖₂ over the radius
 };
 
+// Which rolling-resistance law a scene uses (when rolling_resistance is on).
+enum class RollingModel { epsd, constant_torque };
+
 struct SlumpScene {
     std::string source;
     std::string dt_field = "run.dt_s";  // where dt came from, for messages ("file:line: run.dt_s")
@@ -30,7 +33,8 @@ struct SlumpScene {
     double fill_height_m = 0.054;
     unsigned seed = 1;
     dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0};
-    bool rolling_resistance = true;  // EPSD (Ai et al. 2011, epsd2)
+    bool rolling_resistance = true;
+    RollingModel rolling_model = RollingModel::epsd;  // Ai et al. 2011 type C (epsd2) or type A (cdt)
     // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
     // plane, on a jittered hexagonal lattice covering a disc (the usual base of repose-angle tests).
     bool rough_floor = false;

@@ -83,10 +83,9 @@ TEST_CASE("Friction dissipates m v0^2 / 7 while a thrown sphere goes from slidin
     CHECK(e.dissipated.rolling == 0);
 }
 
-TEST_CASE("Plastic rolling resistance dissipates all the energy of a rolling sphere", "[dem][energy]") {
-    // Rolling at v: kinetic ½mv² + ½(2/5 mR²)(v/R)² = 7/10 m v², all of it lost to the rolling torque
-    // mu_r R m g over the distance 7 v² / (10 mu_r g).
-    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>;
+template <class Rolling>
+void check_rolling_loss() {
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, Rolling>;
     const double mu_r = 0.1, v = 0.05;
     Particles p;
     p.add({0, 0, r}, r, rho);
@@ -100,6 +99,13 @@ TEST_CASE("Plastic rolling resistance dissipates all the energy of a rolling sph
     const Energy e = sim.energy();
     CHECK(e.dissipated.rolling - rest.dissipated.rolling == Approx(0.7 * m * v * v).epsilon(0.02));
     CHECK(sim.particles().position[0].x() - x0 == Approx(0.7 * v * v / (mu_r * g)).epsilon(0.02));
+}
+
+TEST_CASE("Plastic rolling resistance dissipates all the energy of a rolling sphere", "[dem][energy]") {
+    // Rolling at v: kinetic ½mv² + ½(2/5 mR²)(v/R)² = 7/10 m v², all of it lost to the rolling torque
+    // mu_r R m g over the distance 7 v² / (10 mu_r g). Both rolling laws.
+    check_rolling_loss<RollingEpsd>();
+    check_rolling_loss<RollingConstantTorque>();
 }
 
 TEST_CASE("The ledger does not change the physics: with and without it, the same bits", "[dem][energy]") {

@@ -60,9 +60,38 @@ TEST_CASE("Sphere on an incline: rolls below tan(alpha) = 7 mu / 2, slides above
     }
 }
 
-TEST_CASE("Rolling resistance (EPSD): deceleration 5/7 mu_r g under full mobilisation, then rest", "[dem][rolling]") {
-    // Resisting torque M = mu_r R m g: I w' = -F R - M with m v' = F and v = w R gives v' = -(5/7) mu_r g.
-    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>;
+TEST_CASE("Linear tangential spring: a sticking oblique impact turns the contact point's slip by cos(pi sqrt(7 kappa / 2))",
+          "[dem][friction]") {
+    // Sphere on a wall, linear springs, no damping, friction high enough never to slide. The contact
+    // lasts pi sqrt(m / k_n); the contact point's tangential motion oscillates with the mass
+    // m_t = m / (1 + m R^2 / I) = 2/7 m, so u_after = u_before cos(pi sqrt(k_t m / (k_n m_t))).
+    // kappa = 2/7 reverses it, 8/7 restores it (a classic result; Schafer, Dippel & Wolf 1996).
+    for (const auto& [kappa, expected] : {std::pair{2.0 / 7.0, -1.0}, std::pair{8.0 / 7.0, 1.0}}) {
+        Material m;
+        m.density = rho;
+        m.restitution = 1.0;
+        m.friction = 5.0;
+        m.linear_stiffness = 1e5;
+        m.tangential_stiffness_ratio = kappa;
+        Particles p;
+        p.add({0, 0, r + 1e-9}, r, rho, {0.1, 0, -0.1});
+        Simulation sim(p, ContactLaw<NormalLinear, TangentialLinear>(m), {PlaneWall{}}, Vec3::Zero(), 1e-8, 0.1 * r);
+        for (int n = 0; n < 20000; ++n) sim.step();  // the contact lasts 3.2e-5 s
+        const auto& q = sim.particles();
+        REQUIRE(q.position[0].z() > r);  // left the wall
+        const double slip = q.velocity[0].x() - r * q.angular_velocity[0].y();  // contact point, u = v - R w x z
+        INFO("kappa = " << kappa);
+        CHECK(slip / 0.1 == Approx(expected).margin(0.01));
+        CHECK(q.velocity[0].z() == Approx(0.1).epsilon(1e-3));  // e = 1
+    }
+}
+
+namespace {
+// Resisting torque M = mu_r R m g: I w' = -F R - M with m v' = F and v = w R gives v' = -(5/7) mu_r g,
+// so a sphere rolling at v0 stops after v0^2 / (2 * 5/7 mu_r g) and then stays.
+template <class Rolling>
+void check_rolling_resistance() {
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, Rolling>;
     const double mu_r = 0.1, v0 = 0.05;
     auto sim = on_plane(Law(wall_material(0.5, mu_r)), 0.0, {v0, 0, 0}, {0, v0 / r, 0});
     for (int n = 0; n < 1000; ++n) sim.step();
@@ -71,14 +100,24 @@ TEST_CASE("Rolling resistance (EPSD): deceleration 5/7 mu_r g under full mobilis
     const double a = (sim.particles().velocity[0].x() - x0) / (sim.time() - t0);
     CHECK(-a == Approx(5.0 / 7.0 * mu_r * g).epsilon(0.02));
     for (int n = 0; n < 40000; ++n) sim.step();  // v0 / a = 71 ms: past the stop
-    // At rest it rocks on the undamped rolling spring (epsd2 has no dashpot; seen: ~2 um, period
-    // ~12 ms) but travels no further: over 40 ms it moves far less than 1 % of R.
+    // At rest EPSD rocks on its undamped spring (epsd2 has no dashpot; seen: ~2 um, period ~12 ms)
+    // and the constant torque chatters, but neither travels: over 40 ms far less than 1 % of R.
     const double x_stop = sim.particles().position[0].x();
     for (int n = 0; n < 20000; ++n) sim.step();
     CHECK(std::abs(sim.particles().position[0].x() - x_stop) < 0.01 * r);
     CHECK(x_stop == Approx(v0 * v0 / (2 * 5.0 / 7.0 * mu_r * g)).epsilon(0.03));  // stopping distance
+}
+}  // namespace
+
+TEST_CASE("Rolling resistance (EPSD): deceleration 5/7 mu_r g under full mobilisation, then rest", "[dem][rolling]") {
+    check_rolling_resistance<RollingEpsd>();
     // Without the rolling law the same sphere keeps rolling.
-    auto free = on_plane(ContactLaw<NormalHertz, TangentialMindlin>(wall_material(0.5, mu_r)), 0.0, {v0, 0, 0}, {0, v0 / r, 0});
+    const double v0 = 0.05;
+    auto free = on_plane(ContactLaw<NormalHertz, TangentialMindlin>(wall_material(0.5, 0.1)), 0.0, {v0, 0, 0}, {0, v0 / r, 0});
     for (int n = 0; n < 41000; ++n) free.step();
     CHECK(free.particles().velocity[0].x() == Approx(v0).epsilon(1e-3));
+}
+
+TEST_CASE("Rolling resistance (constant torque): the same deceleration and stopping distance", "[dem][rolling]") {
+    check_rolling_resistance<RollingConstantTorque>();
 }

@@ -1,5 +1,9 @@
 // Rolling resistance.
 //  RollingNone — free rolling: no state, no code in the force loop.
+//  RollingConstantTorque — Ai, Chen, Rotter & Ooi (2011), model type A (constant directional
+//    torque, LIGGGHTS' cdt): M = −μ_r R* |F_n| ω_roll/|ω_roll|. No state; at rest the torque flips
+//    with ω every step, so a stopped sphere chatters (Ai et al.'s known drawback of model A).
+//    Ledger: loses μ_r R* |F_n| |ω_roll| dt.
 //  RollingEpsd — elastic–plastic spring–dashpot of Ai, Chen, Rotter & Ooi (2011), model type C,
 //    without its viscous part (as LIGGGHTS' epsd2): k_r = 2.25 k_n μ_r² R*² (k_n = F_n/δ), incremental torque
 //    ΔM = −k_r ω_roll dt with ω_roll the relative angular velocity in the tangent plane, and the
@@ -21,6 +25,24 @@ struct RollingNone {
     explicit RollingNone(const Material&) {}
     template <class Lost>
     Vec3 torque(const ContactPair&, double, double, State&, Lost&) const { return Vec3::Zero(); }
+    double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
+    template <class Lost>
+    void release(State&, Lost&) const {}
+};
+
+struct RollingConstantTorque {
+    struct State {};
+    double mu_r;
+    explicit RollingConstantTorque(const Material& m) : mu_r(m.rolling_friction) {}
+    template <class Lost>
+    Vec3 torque(const ContactPair& c, double, double normal_force, State&, Lost& lost) const {
+        const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
+        const double w = w_roll.norm();
+        if (w == 0) return Vec3::Zero();
+        const double magnitude = mu_r * c.r_eff * std::abs(normal_force);
+        lost.rolling += magnitude * w * c.dt;
+        return -magnitude / w * w_roll;
+    }
     double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
     template <class Lost>
     void release(State&, Lost&) const {}

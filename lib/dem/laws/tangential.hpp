@@ -3,6 +3,7 @@
 //  TangentialMindlin — incremental spring with history (Mindlin & Deresiewicz 1953 no-slip stiffness
 //    S_t = 8 G* √(R* δ)), damping −2√(5/6) β √(S_t m*) v_t, Coulomb limit |F_t| ≤ μ F_n; on sliding
 //    the spring is reset to the limit (as in LIGGGHTS' tangential_history). SI units.
+//  TangentialLinear — the same with a constant stiffness k_t = κ k_n and the linear dashpot.
 //    Ledger: the dashpot loses c|v_t|²dt; a sliding step loses the work −F_t·Δξ less the spring's
 //    energy change (the energy the Coulomb cap removes); the stiffness change is booked apart.
 #pragma once
@@ -25,17 +26,20 @@ struct TangentialNone {
     void release(State&, Lost&) const {}
 };
 
-struct TangentialMindlin {
+// Tangential spring with history and a Coulomb limit; the spring law (stiffness and dashpot) is the
+// parameter. A fresh contact starts at zero; on sliding the spring is reset to the limit.
+template <class Spring>
+struct TangentialHistory {
     struct State {
         Vec3 spring = Vec3::Zero();  // accumulated tangential displacement ξ, m
         double stiffness = 0;        // S_t at the last step, N/m (for the ledger)
     };
-    double g_star, beta, mu;
+    Spring law;
+    double mu;
 
-    explicit TangentialMindlin(const Material& m)
-        : g_star(effective_shear(m)), beta(damping_ratio(m.restitution)), mu(m.friction) {}
+    explicit TangentialHistory(const Material& m) : law(m), mu(m.friction) {}
 
-    double stiffness(const ContactPair& c) const { return 8.0 * g_star * c.contact_radius; }
+    double stiffness(const ContactPair& c) const { return law.stiffness(c); }
 
     // normal_force: the total normal force (for the Coulomb limit); lost: what this step dissipates is added.
     // Lost: Dissipation, or NoDissipation to book nothing.
@@ -54,7 +58,7 @@ struct TangentialMindlin {
         lost.spring_stiffness += 0.5 * (s.stiffness - st) * length2;
         s.stiffness = st;
         s.spring += c.v_tangential * c.dt;
-        const double damping = -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * c.m_eff);
+        const double damping = law.damping(st, c.m_eff);  // ≤ 0
         Vec3 f = -st * s.spring - damping * c.v_tangential;
         const double limit = mu * std::abs(normal_force), magnitude = f.norm();
         if (magnitude > limit) {  // sliding: cap at μF_n, spring consistent with the capped force
@@ -80,5 +84,28 @@ struct TangentialMindlin {
         return c.overlap > 0 ? 0.5 * stiffness(c) * s.spring.squaredNorm() : 0.0;
     }
 };
+
+// Mindlin & Deresiewicz (1953) no-slip stiffness S_t = 8 G* √(R* δ), dashpot −2√(5/6) β √(S_t m*)
+// (the Hertzian form, as LIGGGHTS' hertz tangential history).
+struct MindlinSpring {
+    double g_star, beta;
+    explicit MindlinSpring(const Material& m) : g_star(effective_shear(m)), beta(damping_ratio(m.restitution)) {}
+    double stiffness(const ContactPair& c) const { return 8.0 * g_star * c.contact_radius; }
+    double damping(double st, double m_eff) const { return -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * m_eff); }
+};
+
+// Linear spring k_t = κ k_n (Material::tangential_stiffness_ratio, 2/7 by default: then a sticking
+// sphere's tangential and normal oscillations take equal times), dashpot −2β √(k_t m*), the
+// normal law's damping ratio (as the linear normal dashpot). For use with NormalLinear.
+struct LinearTangentialSpring {
+    double k_t, beta;
+    explicit LinearTangentialSpring(const Material& m)
+        : k_t(m.tangential_stiffness_ratio * m.linear_stiffness), beta(damping_ratio(m.restitution)) {}
+    double stiffness(const ContactPair&) const { return k_t; }
+    double damping(double st, double m_eff) const { return -2.0 * beta * std::sqrt(st * m_eff); }
+};
+
+using TangentialMindlin = TangentialHistory<MindlinSpring>;
+using TangentialLinear = TangentialHistory<LinearTangentialSpring>;
 
 }  // namespace demscale::dem
