@@ -76,7 +76,7 @@ TEST_CASE("Rupture distances of the three laws", "[bridge][rupture]") {
     CHECK(rupture_hhat(0.05544, t20, RuptureLaw::mikami1998) == Approx(1.206421 * 0.374025).epsilon(1e-5));
 }
 
-TEST_CASE("Beyond rupture there is no bridge; below it there is; overlap uses contact", "[bridge][mikami]") {
+TEST_CASE("Beyond rupture there is no bridge, below it there is, overlap uses contact", "[bridge][mikami]") {
     const auto k = mikami_coefficients(0.05544, zero, published);
     const double hc = k.hhat_rupture;
     CHECK(mikami_fhat(k, std::nextafter(hc, 1.0)) == 0.0);

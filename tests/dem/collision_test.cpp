@@ -112,7 +112,7 @@ TEST_CASE("Sphere resting on a plane: static overlap equals mg/k and the Hertz s
     }
 }
 
-TEST_CASE("A fixed sphere never moves; others bounce off it with the law's restitution and rest on it at the Hertz overlap",
+TEST_CASE("A fixed sphere never moves, others bounce off it with the law's restitution and rest on it at the Hertz overlap",
           "[dem][contact][fixed]") {
     Material m;
     m.density = rho;

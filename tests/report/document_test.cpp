@@ -20,7 +20,7 @@ TEST_CASE("base64 matches RFC 4648 section 10", "[report][document]") {
     CHECK(base64(std::string("\xff\x00\x80", 3)) == "/wCA");
 }
 
-TEST_CASE("HTML is self-contained and escaped; Markdown links figures relative to itself", "[report][document]") {
+TEST_CASE("HTML is self-contained and escaped, Markdown links figures relative to itself", "[report][document]") {
     const fs::path dir = fs::temp_directory_path() / "demscale_document_test";
     fs::create_directories(dir / "figures");
     std::ofstream(dir / "figures" / "a.png", std::ios::binary) << "foobar";

@@ -47,7 +47,7 @@ TEST_CASE("Table CSV has the stable interface columns", "[report][table]") {
     CHECK(has_variant);
 }
 
-TEST_CASE("Fig. 3 collapses; Fig. 4 collapses for k = 1 and spreads as S_f^2 for k = 3", "[report][curves]") {
+TEST_CASE("Fig. 3 collapses, Fig. 4 collapses for k = 1 and spreads as S_f^2 for k = 3", "[report][curves]") {
     const auto c = shipped();
     for (const auto& x : report::measure_collapse(report::compute_curves(c, report::Figure::force, {}), report::Figure::force))
         CHECK(x.max_relative_spread < 1e-12);

@@ -59,7 +59,7 @@ TEST_CASE("Filling: equal spheres inside the cone, no overlaps, reproducible fro
     }
 }
 
-TEST_CASE("Rough floor: grains cover the disc at the close-packed density; the fill starts clear of them", "[slump][fill]") {
+TEST_CASE("Rough floor: grains cover the disc at the close-packed density, the fill starts clear of them", "[slump][fill]") {
     auto s = load_slump_scene(DEMSCALE_SOURCE_DIR "/data/scenes/repose_rough.toml");
     const auto grains = floor_grains(s);
     // Hexagonal lattice of pitch 2R: one sphere per 2 sqrt(3) R^2 of floor.
@@ -110,7 +110,7 @@ TEST_CASE("Dry pile on a rough floor: repose angle in the range for its friction
     CHECK(run_slump(slippery).final.repose_angle_deg < mean - 5);
 }
 
-TEST_CASE("Small slump: the wet pile stands taller and spreads less than the dry one; runs repeat exactly",
+TEST_CASE("Small slump: the wet pile stands taller and spreads less than the dry one, runs repeat exactly",
           "[slump][run]") {
     const auto wet = run_slump(small(true)), dry = run_slump(small(false));
     CHECK(wet.final.height > 1.3 * dry.final.height);

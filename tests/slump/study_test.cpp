@@ -32,7 +32,7 @@ SlumpResult triangle(double H, double w, double slump, double d95) {
 }
 }  // namespace
 
-TEST_CASE("Coarse scene: R, gamma, skin and dt scale as the algebra says; the rest is held", "[slump][coarse]") {
+TEST_CASE("Coarse scene: R, gamma, skin and dt scale as the algebra says, the rest is held", "[slump][coarse]") {
     const auto fine = kantro();
     const double sf = 2.74;
     for (double k : {1.0, 3.0}) {
