@@ -95,12 +95,15 @@ int run_dem_bench(const Options& o) {
     t.columns = {"laws", "particles", "steps", "wall_s", "particle_steps_per_s", "cost_vs_dry_free_rolling"};
     double base = 0;
     for (const bool wet : {false, true})
-        for (const char* rolling : {"", "+epsd", "+cdt"})
+        for (const char* rolling : {"", "+epsd", "+epsd2", "+cdt"})
             for (const bool ledger : {false, true}) {
                 auto s = slump::load_slump_scene(o.scene);
                 s.wet = wet;
                 s.rolling_resistance = *rolling != 0;
-                s.rolling_model = std::string(rolling) == "+cdt" ? slump::RollingModel::constant_torque : slump::RollingModel::epsd;
+                const std::string name = rolling;
+                s.rolling_model = name == "+cdt"     ? slump::RollingModel::constant_torque
+                                  : name == "+epsd2" ? slump::RollingModel::epsd2
+                                                     : slump::RollingModel::epsd;
                 slump::SlumpPhases phases;
                 phases.energy_ledger = ledger;
                 const auto r = slump::run_slump(s, {}, false, phases);

@@ -58,8 +58,8 @@ struct ContactLaw {
         if (c.overlap > 0) {
             out.tangential = tangential.force(c, fn, s.tangential, lost);
             out.on_i += out.tangential;
-            // Rolling stiffness uses the secant normal stiffness F_el/δ (as LIGGGHTS' epsd2 does).
-            out.rolling_torque = rolling.torque(c, elastic / c.overlap, fn, s.rolling, lost);
+            // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
+            out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
         } else {  // surfaces apart: tangential and rolling springs are released
             tangential.release(s.tangential, lost);
             rolling.release(s.rolling, lost);
@@ -82,7 +82,7 @@ struct ContactLaw {
         if (c.overlap > 0) {
             e.normal = normal.elastic_energy(c);
             e.tangential = tangential.stored_energy(c, s.tangential);
-            e.rolling = rolling.stored_energy(c, normal.elastic_force(c) / c.overlap, s.rolling);
+            e.rolling = rolling.stored_energy(c, normal.elastic_force(c) / c.overlap, tangential.stiffness(c), s.rolling);
         }
         return e;
     }

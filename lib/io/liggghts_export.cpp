@@ -61,7 +61,11 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     const auto& m = sc.material;
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
     const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
-    const std::string rolling = sc.rolling_model == slump::RollingModel::constant_torque ? " rolling_friction cdt" : " rolling_friction epsd2";
+    // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and no viscous damping.
+    const auto model = sc.rolling_model;
+    const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
+                                : model == slump::RollingModel::epsd2         ? " rolling_friction epsd2"
+                                                                              : " rolling_friction epsd3";
     const std::string laws = "model hertz tangential history" + (sc.rolling_resistance ? rolling : std::string());
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
@@ -80,6 +84,10 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
       << "fix m3 all property/global coefficientRestitution peratomtypepair 1 " << m.restitution << "\n"
       << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << m.friction << "\n"
       << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n"
+      << (sc.rolling_resistance && model == slump::RollingModel::epsd
+              ? "fix m6 all property/global rollingStiffness scalar 2.25\n"
+                "fix m7 all property/global coefficientRollingViscousDamping peratomtypepair 1 0.0\n"
+              : "")
       << "pair_style gran " << laws << "\npair_coeff * *\n"
       << "timestep " << sc.dt_s << "\n"
       << "fix gravi " << pile << " gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"

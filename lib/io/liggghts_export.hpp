@@ -1,6 +1,7 @@
 // Export of a slump scene to LIGGGHTS (3.8, Debian's liggghts): the settled particles as a data
 // file (atom_style granular), the cone as an STL mesh, and an input deck with the same laws
-// (hertz, tangential history, rolling_friction epsd2), parameters, time step, lift and spread, ending
+// (hertz, tangential history, and the scene's rolling law: epsd3 with Ai's 2.25 and no damping for
+// demscale's epsd, epsd2, or cdt), parameters, time step, lift and spread, ending
 // in a dump of the final pile. A rough floor's grains follow the pile in the data file, in a group
 // that is never integrated (held in place). LIGGGHTS-PUBLIC has no Mikami bridge: a wet scene is exported dry,
 // and the deck says so.

@@ -201,6 +201,8 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
         if (!s.rolling_resistance) return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion>(s.material, cohesion));
         if (s.rolling_model == RollingModel::constant_torque)
             return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingConstantTorque>(s.material, cohesion));
+        if (s.rolling_model == RollingModel::epsd2)
+            return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd2>(s.material, cohesion));
         return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd>(s.material, cohesion));
     };
     res = s.wet ? with_rolling(bridge_for(s)) : with_rolling(CohesionNone{});

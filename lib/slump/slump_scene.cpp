@@ -65,8 +65,9 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
     if (auto m = r.text("contact.rolling_model")) {
         if (*m == "epsd") s.rolling_model = RollingModel::epsd;
+        else if (*m == "epsd2") s.rolling_model = RollingModel::epsd2;
         else if (*m == "constant_torque") s.rolling_model = RollingModel::constant_torque;
-        else throw InputError(r.where("contact.rolling_model", "contact.rolling_model"), *m, "\"epsd\" or \"constant_torque\"");
+        else throw InputError(r.where("contact.rolling_model", "contact.rolling_model"), *m, "\"epsd\", \"epsd2\" or \"constant_torque\"");
     }
 
     s.wet = r.boolean("liquid.wet").value_or(true);

@@ -19,7 +19,9 @@ struct Tolerances {
 };
 
 // Which rolling-resistance law a scene uses (when rolling_resistance is on).
-enum class RollingModel { epsd, constant_torque };
+// epsd: Ai et al.'s k_r = 2.25 k_n μ_r² R*², no dashpot; epsd2: LIGGGHTS' epsd2, k_r = k_t R*²;
+// constant_torque: Ai et al.'s model type A (LIGGGHTS' cdt).
+enum class RollingModel { epsd, epsd2, constant_torque };
 
 struct SlumpScene {
     std::string source;
@@ -34,7 +36,7 @@ struct SlumpScene {
     unsigned seed = 1;
     dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0};
     bool rolling_resistance = true;
-    RollingModel rolling_model = RollingModel::epsd;  // Ai et al. 2011 type C (epsd2) or type A (cdt)
+    RollingModel rolling_model = RollingModel::epsd;
     // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
     // plane, on a jittered hexagonal lattice covering a disc (the usual base of repose-angle tests).
     bool rough_floor = false;

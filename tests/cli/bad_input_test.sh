@@ -121,7 +121,7 @@ case $class in
     scene '[liquid]' 'contact_angle_deg = 90'
     scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) degrees' "$work/scene.toml"
     scene '[contact]' 'rolling_model = "sideways"'
-    scene_commands 'scene.toml:2: contact.rolling_model = sideways: accepted "epsd" or "constant_torque"' "$work/scene.toml"
+    scene_commands 'scene.toml:2: contact.rolling_model = sideways: accepted "epsd", "epsd2" or "constant_torque"' "$work/scene.toml"
     config '[particle]' 'radii_mm = [1.0, -2.0]' 'masses_g = [0.01, 0.07]'
     config_commands 'config.toml:2: particle.radii_mm\[1\] = -2: accepted a finite number > 0' "$work/config.toml"
     refuse '--sf = 0: accepted a finite number > 0' -- "$demscale" slump --scene "$small" --sf 0

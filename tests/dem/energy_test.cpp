@@ -106,6 +106,7 @@ TEST_CASE("Plastic rolling resistance dissipates all the energy of a rolling sph
     // mu_r R m g over the distance 7 v² / (10 mu_r g). Both rolling laws.
     check_rolling_loss<RollingEpsd>();
     check_rolling_loss<RollingConstantTorque>();
+    check_rolling_loss<RollingEpsd2>();
 }
 
 TEST_CASE("The ledger does not change the physics: with and without it, the same bits", "[dem][energy]") {

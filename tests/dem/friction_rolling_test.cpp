@@ -100,7 +100,7 @@ void check_rolling_resistance() {
     const double a = (sim.particles().velocity[0].x() - x0) / (sim.time() - t0);
     CHECK(-a == Approx(5.0 / 7.0 * mu_r * g).epsilon(0.02));
     for (int n = 0; n < 40000; ++n) sim.step();  // v0 / a = 71 ms: past the stop
-    // At rest EPSD rocks on its undamped spring (epsd2 has no dashpot; seen: ~2 um, period ~12 ms)
+    // At rest EPSD rocks on its undamped spring (no dashpot; seen: ~2 um, period ~12 ms)
     // and the constant torque chatters, but neither travels: over 40 ms far less than 1 % of R.
     const double x_stop = sim.particles().position[0].x();
     for (int n = 0; n < 20000; ++n) sim.step();
@@ -118,6 +118,30 @@ TEST_CASE("Rolling resistance (EPSD): deceleration 5/7 mu_r g under full mobilis
     CHECK(free.particles().velocity[0].x() == Approx(v0).epsilon(1e-3));
 }
 
-TEST_CASE("Rolling resistance (constant torque): the same deceleration and stopping distance", "[dem][rolling]") {
+TEST_CASE("Rolling resistance (constant torque, EPSD2): the same deceleration and stopping distance", "[dem][rolling]") {
     check_rolling_resistance<RollingConstantTorque>();
+    check_rolling_resistance<RollingEpsd2>();
+}
+
+TEST_CASE("Rolling springs: an elastic step turns the torque by k_r w dt, with Ai's or Iwashita and Oda's k_r",
+          "[dem][rolling]") {
+    // k_r = 2.25 k_n mu_r^2 R*^2 with the secant k_n = F_el / delta = 4/3 E* sqrt(R* delta) (Ai et al. 2011),
+    // or k_r = k_t R*^2 with Mindlin's k_t = 8 G* sqrt(R* delta) (Iwashita & Oda 1998, LIGGGHTS' epsd2).
+    const Material m = wall_material(0.5, 0.1);
+    ContactPair c;
+    c.r_eff = 0.5e-3, c.m_eff = 1e-5, c.overlap = 1e-6, c.contact_radius = std::sqrt(0.5e-3 * 1e-6);
+    c.normal = Vec3::UnitZ(), c.v_rel = c.v_tangential = Vec3::Zero(), c.v_normal = 0;
+    c.w_rel = Vec3(0, 10, 0), c.dt = 1e-6;
+    const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
+    const double g_star = m.youngs_modulus / (4 * (2 - m.poisson_ratio) * (1 + m.poisson_ratio));
+    const double a = std::sqrt(c.r_eff * c.overlap), r2 = c.r_eff * c.r_eff;
+    const double ai = 2.25 * (4.0 / 3.0 * e_star * a) * 0.1 * 0.1 * r2, iwashita_oda = 8 * g_star * a * r2;
+    NoDissipation lost;
+    auto turn = [&](auto law) {
+        typename decltype(law)::State state;
+        return law.force(c, state, lost).rolling_torque.y() / (c.w_rel.y() * c.dt);
+    };
+    CHECK(-turn(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(m)) == Approx(ai).epsilon(1e-12));
+    CHECK(-turn(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd2>(m)) == Approx(iwashita_oda).epsilon(1e-12));
+    CHECK(iwashita_oda / ai > 50);  // for these parameters LIGGGHTS' epsd2 spring is 55 times stiffer
 }

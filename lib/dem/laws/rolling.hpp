@@ -1,13 +1,16 @@
-// Rolling resistance.
+// Rolling resistance. Laws get the contact, the normal law's secant stiffness k_n = F_el/δ, the
+// tangential law's stiffness k_t and the normal force F_n (N/m, N/m, N). SI units.
 //  RollingNone — free rolling: no state, no code in the force loop.
 //  RollingConstantTorque — Ai, Chen, Rotter & Ooi (2011), model type A (constant directional
-//    torque, LIGGGHTS' cdt): M = −μ_r R* |F_n| ω_roll/|ω_roll|. No state; at rest the torque flips
-//    with ω every step, so a stopped sphere chatters (Ai et al.'s known drawback of model A).
-//    Ledger: loses μ_r R* |F_n| |ω_roll| dt.
-//  RollingEpsd — elastic–plastic spring–dashpot of Ai, Chen, Rotter & Ooi (2011), model type C,
-//    without its viscous part (as LIGGGHTS' epsd2): k_r = 2.25 k_n μ_r² R*² (k_n = F_n/δ), incremental torque
-//    ΔM = −k_r ω_roll dt with ω_roll the relative angular velocity in the tangent plane, and the
-//    plastic limit |M| ≤ μ_r R* F_n. Torque on i is M, on j is −M. SI units.
+//    torque, LIGGGHTS' cdt): M = −μ_r R* F_el ω_roll/|ω_roll|, with the elastic normal force
+//    F_el = k_n δ as cdt uses. No state; at rest the torque flips with ω every step, so a stopped
+//    sphere chatters (Ai et al.'s known drawback of model A). Ledger: loses |M| |ω_roll| dt.
+//  RollingSpring<Stiffness> — elastic–plastic rolling spring without a dashpot: incremental torque
+//    ΔM = −k_r ω_roll dt, ω_roll the relative angular velocity in the tangent plane, plastic limit
+//    |M| ≤ μ_r R* |F_n|. Torque on i is M, on j is −M. Two stiffness rules:
+//      RollingEpsd  — Ai et al. (2011), model type C: k_r = 2.25 k_n μ_r² R*² (their dashpot left
+//                     out; LIGGGHTS' epsd3 with rollingStiffness 2.25 and no viscous damping).
+//      RollingEpsd2 — Iwashita & Oda (1998), LIGGGHTS' epsd2: k_r = k_t R*², no dashpot.
 //    Ledger: a step at the limit loses the work −M·Δθ less the spring's energy change; the stiffness
 //    change is booked apart.
 #pragma once
@@ -24,8 +27,8 @@ struct RollingNone {
     struct State {};
     explicit RollingNone(const Material&) {}
     template <class Lost>
-    Vec3 torque(const ContactPair&, double, double, State&, Lost&) const { return Vec3::Zero(); }
-    double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
+    Vec3 torque(const ContactPair&, double, double, double, State&, Lost&) const { return Vec3::Zero(); }
+    double stored_energy(const ContactPair&, double, double, const State&) const { return 0.0; }
     template <class Lost>
     void release(State&, Lost&) const {}
 };
@@ -35,38 +38,39 @@ struct RollingConstantTorque {
     double mu_r;
     explicit RollingConstantTorque(const Material& m) : mu_r(m.rolling_friction) {}
     template <class Lost>
-    Vec3 torque(const ContactPair& c, double, double normal_force, State&, Lost& lost) const {
+    Vec3 torque(const ContactPair& c, double normal_stiffness, double, double, State&, Lost& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
         const double w = w_roll.norm();
         if (w == 0) return Vec3::Zero();
-        const double magnitude = mu_r * c.r_eff * std::abs(normal_force);
+        const double magnitude = mu_r * c.r_eff * normal_stiffness * c.overlap;
         lost.rolling += magnitude * w * c.dt;
         return -magnitude / w * w_roll;
     }
-    double stored_energy(const ContactPair&, double, const State&) const { return 0.0; }
+    double stored_energy(const ContactPair&, double, double, const State&) const { return 0.0; }
     template <class Lost>
     void release(State&, Lost&) const {}
 };
 
-struct RollingEpsd {
+template <class Stiffness>
+struct RollingSpring {
     struct State {
         Vec3 torque = Vec3::Zero();  // elastic rolling torque carried between steps, N m
         double stiffness = 0;        // k_r at the last step, N m/rad (for the ledger)
     };
     double mu_r;
 
-    explicit RollingEpsd(const Material& m) : mu_r(m.rolling_friction) {}
+    explicit RollingSpring(const Material& m) : mu_r(m.rolling_friction) {}
 
-    double stiffness(const ContactPair& c, double normal_stiffness) const {
-        return 2.25 * normal_stiffness * mu_r * mu_r * c.r_eff * c.r_eff;
+    double stiffness(const ContactPair& c, double normal_stiffness, double tangential_stiffness) const {
+        return Stiffness::of(c, normal_stiffness, tangential_stiffness, mu_r);
     }
 
-    // normal_stiffness: secant k_n = F_el/δ of the normal law at this overlap (N/m); normal_force: F_n (N);
     // lost: what this step dissipates is added.
     template <class Lost>
-    Vec3 torque(const ContactPair& c, double normal_stiffness, double normal_force, State& s, Lost& lost) const {
+    Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force, State& s,
+                Lost& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
-        const double kr = stiffness(c, normal_stiffness);
+        const double kr = stiffness(c, normal_stiffness, tangential_stiffness);
         s.torque -= c.normal * c.normal.dot(s.torque);  // keep it in the tangent plane
         const double before = s.torque.squaredNorm();
         if (s.stiffness > 0 && kr > 0) lost.spring_stiffness += 0.5 * before * (kr - s.stiffness) / (s.stiffness * kr);
@@ -89,10 +93,22 @@ struct RollingEpsd {
     }
 
     // ½ |M|² / k_r, J.
-    double stored_energy(const ContactPair& c, double normal_stiffness, const State& s) const {
-        const double kr = stiffness(c, normal_stiffness);
+    double stored_energy(const ContactPair& c, double normal_stiffness, double tangential_stiffness, const State& s) const {
+        const double kr = stiffness(c, normal_stiffness, tangential_stiffness);
         return kr > 0 ? 0.5 * s.torque.squaredNorm() / kr : 0.0;
     }
 };
+
+// k_r = 2.25 k_n μ_r² R*² (Ai et al. 2011, model type C).
+struct AiRollingStiffness {
+    static double of(const ContactPair& c, double k_n, double, double mu_r) { return 2.25 * k_n * mu_r * mu_r * c.r_eff * c.r_eff; }
+};
+// k_r = k_t R*² (Iwashita & Oda 1998; LIGGGHTS' epsd2).
+struct IwashitaOdaRollingStiffness {
+    static double of(const ContactPair& c, double, double k_t, double) { return k_t * c.r_eff * c.r_eff; }
+};
+
+using RollingEpsd = RollingSpring<AiRollingStiffness>;
+using RollingEpsd2 = RollingSpring<IwashitaOdaRollingStiffness>;
 
 }  // namespace demscale::dem

@@ -19,6 +19,7 @@ namespace demscale::dem {
 struct TangentialNone {
     struct State {};
     explicit TangentialNone(const Material&) {}
+    double stiffness(const ContactPair&) const { return 0.0; }
     template <class Lost>
     Vec3 force(const ContactPair&, double, State&, Lost&) const { return Vec3::Zero(); }
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
