@@ -146,7 +146,7 @@ TEST_CASE("Energy ledger balances for a dry column collapsing from a lifted tube
     check_ledger(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(material(0.5, 0.1)), "dry");
 }
 
-TEST_CASE("Energy ledger balances for a wet column collapsing from a lifted tube", "[dem][energy][bridge]") {
+TEST_CASE("Energy ledger balances for a wet column collapsing from a lifted tube", "[dem][energy][bridge][slow]") {
     using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
     const double vhat = 0.05544;  // Eq. 5 at 4.5 % moisture (physics.md)
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});

@@ -78,7 +78,7 @@ TEST_CASE("Rough floor: grains cover the disc at the close-packed density, the f
 }
 
 TEST_CASE("Dry pile on a rough floor: repose angle in the range for its friction, lower with less friction",
-          "[slump][run][repose]") {
+          "[slump][run][repose][slow]") {
     // Expected: free-flowing granular piles stand at 25-40 degrees (Carr's classification; DEM piles of
     // spheres with sliding friction 0.5 and rolling resistance lie in it, and the angle rises with both
     // frictions: Zhou et al. 2001, Phys. Rev. E 64, 021301). The pile has ~360 spheres, so one seed
@@ -111,7 +111,7 @@ TEST_CASE("Dry pile on a rough floor: repose angle in the range for its friction
 }
 
 TEST_CASE("Small slump: the wet pile stands taller and spreads less than the dry one, runs repeat exactly",
-          "[slump][run]") {
+          "[slump][run][slow]") {
     const auto wet = run_slump(small(true)), dry = run_slump(small(false));
     CHECK(wet.final.height > 1.3 * dry.final.height);
     CHECK(wet.final.spread_d95 < dry.final.spread_d95);
@@ -141,7 +141,7 @@ TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][er
     CHECK_THROWS_WITH(coarse_grained(small(true), {5.0, 1.0, {}}), Catch::Matchers::Contains("--sf = 5"));
 }
 
-TEST_CASE("Interrupted in each phase and resumed from the checkpoint: identical to an uninterrupted run", "[slump][resume]") {
+TEST_CASE("Interrupted in each phase and resumed from the checkpoint: identical to an uninterrupted run", "[slump][resume][slow]") {
     auto scene = small(true);
     scene.settle_time_s = 0.05, scene.spread_time_s = 0.05;  // every phase, in fewer steps
     const auto whole = run_slump(scene);
