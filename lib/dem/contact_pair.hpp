@@ -1,6 +1,7 @@
 // What every contact law needs to know about one pair at one instant: effective radius and mass,
 // overlap, unit normal and relative velocity at the contact point. Particle–wall pairs use the
-// particle's own radius and mass (the wall is infinitely large and heavy). SI units.
+// particle's own radius and mass (the wall is infinitely large and heavy). Apart (δ ≤ 0) only the
+// cohesion law acts, on the gap alone: the velocities are left zero. SI units.
 #pragma once
 
 #include "dem/particles.hpp"

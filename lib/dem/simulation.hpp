@@ -246,14 +246,18 @@ private:
         c.r_eff = wall ? ri : ri * rj / (ri + rj);
         c.contact_radius = c.overlap > 0 ? std::sqrt(c.r_eff * c.overlap) : 0.0;
         c.m_eff = m_eff;
+        c.dt = dt_;
+        c.wall = wall;
+        if (c.overlap <= 0) {  // apart: only cohesion acts, and it needs the gap alone
+            c.v_rel = c.v_tangential = c.w_rel = Vec3::Zero();
+            return c;
+        }
         // Contact point at the middle of the overlap; lever arms from each centre.
         const double li = ri - 0.5 * c.overlap, lj = rj - 0.5 * c.overlap;
         c.v_rel = p_.velocity[i] + p_.angular_velocity[i].cross(-li * c.normal) - (vj + wj.cross(lj * c.normal));
         c.v_normal = c.v_rel.dot(c.normal);
         c.v_tangential = c.v_rel - c.v_normal * c.normal;
         c.w_rel = p_.angular_velocity[i] - wj;
-        c.dt = dt_;
-        c.wall = wall;
         return c;
     }
 
@@ -281,8 +285,9 @@ private:
                 const ContactPair c =
                     pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false);
                 const ContactForce f = law_.force(c, q.state, lost);
-                const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
                 out.force_i = f.on_i;
+                if (c.overlap <= 0) continue;  // a bridge across a gap: central force, no torque
+                const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
                 out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
                 out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
             }
