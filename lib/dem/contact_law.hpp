@@ -44,7 +44,7 @@ struct ContactLaw {
 
     // lost: what this step dissipates is added (Dissipation), or nothing is booked (NoDissipation).
     template <class Lost>
-    ContactForce force(const ContactPair& c, State& s, Lost& lost) const {
+    DEMSCALE_HOT ContactForce force(const ContactPair& c, State& s, Lost& lost) const {
         ContactForce out;
         double fn = 0, elastic = 0;
         if (c.overlap > 0) {

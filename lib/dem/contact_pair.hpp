@@ -6,6 +6,9 @@
 
 #include "dem/particles.hpp"
 
+// For the few functions of the pair loop that GCC leaves out of line: called once per pair per step.
+#define DEMSCALE_HOT [[gnu::always_inline]] inline
+
 namespace demscale::dem {
 
 struct ContactPair {

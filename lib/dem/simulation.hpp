@@ -2,8 +2,8 @@
 // (translation and rotation), a Verlet neighbour list with contact history carried across rebuilds,
 // and energy bookkeeping. SI units.
 // Threads (OpenMP): pair forces are computed in parallel into a per-pair buffer, then each particle
-// sums its contributions in a fixed pair order, so trajectories are bit-identical for any thread
-// count (the energy ledger's sums, per thread, only for the same thread count).
+// sums its contributions in a fixed pair order (on one thread each pair adds to its particles
+// directly, in that same order), so trajectories are bit-identical for any thread count (the energy ledger's sums, per thread, only for the same thread count).
 #pragma once
 
 #include <algorithm>
@@ -237,7 +237,7 @@ private:
 
     // Contact of particle i with a partner (velocity vj, spin wj, radius rj; 0 for a wall) at
     // separation d = x_i − x_j, dist = |d| (the caller's range check already needed it).
-    ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
+    DEMSCALE_HOT ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
                               double m_eff, bool wall) const {
         ContactPair c;
         const double ri = p_.radius[i];
@@ -261,49 +261,67 @@ private:
         return c;
     }
 
+    // What listed pair q contributes now (nothing beyond the law's reach: its history is released).
+    template <class L>
+    DEMSCALE_HOT PairResult pair_result(ListedPair& q, double reach, L& lost) const {
+        PairResult out;
+        const std::size_t i = q.i, j = q.j;
+        const Vec3 d = p_.position[i] - p_.position[j];
+        const double dist = d.norm();
+        if (dist - p_.radius[i] - p_.radius[j] > reach) {
+            law_.release(q.state, lost);
+            return out;
+        }
+        const ContactPair c =
+            pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false);
+        const ContactForce f = law_.force(c, q.state, lost);
+        out.force_i = f.on_i;
+        if (c.overlap <= 0) return out;  // a bridge across a gap: central force, no torque
+        const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
+        out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
+        out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+        return out;
+    }
+
     void compute_forces() {
         const double reach = law_.range();
         const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p_.size());
         // The ledger is summed per thread and then in thread order: deterministic for a given thread
         // count, and no per-pair storage for it.
         if constexpr (Ledger) thread_ledger_.assign(static_cast<std::size_t>(omp_get_max_threads()), ThreadLedger{});
-#pragma omp parallel if (n_pairs > parallel_threshold)
-        {
+        for (std::size_t i = 0; i < p_.size(); ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+        if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
+            // One thread: each pair adds to its two particles at once. Every particle still sums its
+            // pairs in ascending pair order, after gravity: the same bits as the gather below.
             Lost lost;
+            for (auto& q : pairs_) {
+                const PairResult r = pair_result(q, reach, lost);
+                p_.force[q.i] += r.force_i, p_.torque[q.i] += r.torque_i;
+                p_.force[q.j] -= r.force_i, p_.torque[q.j] += r.torque_j;
+            }
+            if constexpr (Ledger) thread_ledger_[0].lost += lost;
+        } else {
+            // Threads: pair results into a buffer, then each particle gathers its own (no races).
+#pragma omp parallel
+            {
+                Lost lost;
 #pragma omp for schedule(static)
-            for (long k = 0; k < n_pairs; ++k) {
-                auto& q = pairs_[static_cast<std::size_t>(k)];
-                PairResult& out = results_[static_cast<std::size_t>(k)];
-                out = PairResult{};
-                const std::size_t i = q.i, j = q.j;
-                const Vec3 d = p_.position[i] - p_.position[j];
-                const double dist = d.norm();
-                if (dist - p_.radius[i] - p_.radius[j] > reach) {
-                    law_.release(q.state, lost);
-                    continue;
-                }
-                const ContactPair c =
-                    pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false);
-                const ContactForce f = law_.force(c, q.state, lost);
-                out.force_i = f.on_i;
-                if (c.overlap <= 0) continue;  // a bridge across a gap: central force, no torque
-                const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
-                out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
-                out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+                for (long k = 0; k < n_pairs; ++k)
+                    results_[static_cast<std::size_t>(k)] = pair_result(pairs_[static_cast<std::size_t>(k)], reach, lost);
+                if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())].lost += lost;
             }
-            if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())].lost += lost;
-        }
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
-        for (long ii = 0; ii < n; ++ii) {
-            const std::size_t i = static_cast<std::size_t>(ii);
-            Vec3 f = p_.mass[i] * gravity_, t = Vec3::Zero();
-            for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
-                const PairResult& r = results_[incidence_[e] / 2];
-                if (incidence_[e] % 2 == 0) f += r.force_i, t += r.torque_i;
-                else f -= r.force_i, t += r.torque_j;
+            for (long ii = 0; ii < n; ++ii) {
+                const std::size_t i = static_cast<std::size_t>(ii);
+                Vec3 f = p_.force[i], t = p_.torque[i];
+                for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                    const PairResult& r = results_[incidence_[e] / 2];
+                    if (incidence_[e] % 2 == 0) f += r.force_i, t += r.torque_i;
+                    else f -= r.force_i, t += r.torque_j;
+                }
+                p_.force[i] = f;
+                p_.torque[i] = t;
             }
-            p_.force[i] = f;
-            p_.torque[i] = t;
         }
         std::string wall_error;
 #pragma omp parallel if (n * static_cast<long>(walls_.size()) > parallel_threshold)
@@ -359,9 +377,11 @@ private:
         if (!p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite()) return why + ": its velocity is not finite";
         if (!p_.position[i].allFinite()) return why + ": its position is not finite";
         for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
-            const PairResult& r = results_[incidence_[e] / 2];
+            // Evaluated again on a copy of the contact's history (the step's own results are not kept).
+            ListedPair q = pairs_[incidence_[e] / 2];
+            NoDissipation none;
+            const PairResult r = pair_result(q, law_.range(), none);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
-            const auto& q = pairs_[incidence_[e] / 2];
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p_.position[i] - p_.position[other]).norm() - p_.radius[i] - p_.radius[other];
             return why + ", from its contact with particle " + std::to_string(other) + " (gap " + std::to_string(gap) + " m)";

@@ -67,7 +67,7 @@ struct RollingSpring {
 
     // lost: what this step dissipates is added.
     template <class Lost>
-    Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force, State& s,
+    DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force, State& s,
                 Lost& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
         const double kr = stiffness(c, normal_stiffness, tangential_stiffness);

@@ -45,7 +45,7 @@ struct TangentialHistory {
     // normal_force: the total normal force (for the Coulomb limit); lost: what this step dissipates is added.
     // Lost: Dissipation, or NoDissipation to book nothing.
     template <class Lost>
-    Vec3 force(const ContactPair& c, double normal_force, State& s, Lost& lost) const {
+    DEMSCALE_HOT Vec3 force(const ContactPair& c, double normal_force, State& s, Lost& lost) const {
         // Keep the spring in the current tangent plane, at its length (the pair may have rotated).
         const double length2 = s.spring.squaredNorm();
         if (length2 > 0) {  // a fresh contact has none to turn
