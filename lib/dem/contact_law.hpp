@@ -42,6 +42,13 @@ struct ContactLaw {
     // Interaction range beyond touching surfaces, m (0 for dry laws).
     double range() const { return cohesion.range(); }
 
+    // η_r of the rolling dashpot (0 when the rolling law has none): the engine then sets the
+    // pair's rolling compliance.
+    double rolling_damping() const {
+        if constexpr (requires { rolling.eta_r; }) return rolling.eta_r;
+        else return 0.0;
+    }
+
     // lost: what this step dissipates is added (Dissipation), or nothing is booked (NoDissipation).
     template <class Lost>
     DEMSCALE_HOT ContactForce force(const ContactPair& c, State& s, Lost& lost) const {

@@ -21,6 +21,8 @@ struct ContactPair {
     double v_normal = 0;   // v_rel · n (< 0 approaching)
     Vec3 v_tangential;     // v_rel − v_normal n
     Vec3 w_rel;            // ω_i − ω_j (rolling)
+    double rolling_compliance = 0;  // 1/I_r = 1/(I_i + m_i R_i²) + 1/(I_j + m_j R_j²), 1/(kg m²), Ai et al.
+                                    // (2011); a wall or fixed sphere adds 0. Set only for a rolling dashpot.
     double dt = 0;         // time step, for history updates
     bool wall = false;     // j is a wall
 };

@@ -11,6 +11,7 @@ struct Material {
     double restitution = 0.5;      // normal coefficient of restitution e ∈ (0, 1]
     double friction = 0.5;         // Coulomb sliding friction μ
     double rolling_friction = 0.1; // μ_r
+    double rolling_damping = 0;    // η_r, the rolling dashpot's fraction of critical damping (Ai et al. 2011; 0: none)
     double linear_stiffness = 0;   // N/m, for the linear spring law (0: unused)
     double tangential_stiffness_ratio = 2.0 / 7.0;  // κ = k_t / k_n of the linear tangential spring
 };

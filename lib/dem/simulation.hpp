@@ -97,7 +97,7 @@ public:
             const double dist = d.norm();
             if (dist - p_.radius[i] - p_.radius[j] > law_.range()) continue;
             e.stored += law_.stored_energy(
-                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false), q.state);
+                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j), q.state);
         }
         for (std::size_t w = 0; w < walls_.size(); ++w)
             for (std::size_t i = 0; i < p_.size(); ++i)
@@ -235,10 +235,18 @@ private:
         return p_.fixed[i] ? mj : p_.fixed[j] ? mi : mi * mj / (mi + mj);
     }
 
-    // Contact of particle i with a partner (velocity vj, spin wj, radius rj; 0 for a wall) at
-    // separation d = x_i − x_j, dist = |d| (the caller's range check already needed it).
+    static constexpr std::size_t a_wall = static_cast<std::size_t>(-1);
+
+    // 1/(I + m R²) of particle k, the inverse of its inertia about a contact point; 0 if fixed.
+    double rolling_compliance(std::size_t k) const {
+        return p_.fixed[k] ? 0.0 : 1.0 / (p_.inertia[k] + p_.mass[k] * p_.radius[k] * p_.radius[k]);
+    }
+
+    // Contact of particle i with partner j (or a_wall) moving with velocity vj and spin wj, radius rj
+    // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already needed it).
     DEMSCALE_HOT ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
-                              double m_eff, bool wall) const {
+                              double m_eff, std::size_t j) const {
+        const bool wall = j == a_wall;
         ContactPair c;
         const double ri = p_.radius[i];
         c.overlap = ri + rj - dist;
@@ -258,6 +266,7 @@ private:
         c.v_normal = c.v_rel.dot(c.normal);
         c.v_tangential = c.v_rel - c.v_normal * c.normal;
         c.w_rel = p_.angular_velocity[i] - wj;
+        if (law_.rolling_damping() > 0) c.rolling_compliance = rolling_compliance(i) + (wall ? 0.0 : rolling_compliance(j));
         return c;
     }
 
@@ -273,7 +282,7 @@ private:
             return out;
         }
         const ContactPair c =
-            pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), false);
+            pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j);
         const ContactForce f = law_.force(c, q.state, lost);
         out.force_i = f.on_i;
         if (c.overlap <= 0) return out;  // a bridge across a gap: central force, no torque
@@ -346,7 +355,7 @@ private:
                         law_.release(wall_state_[w][i], lost);
                         continue;
                     }
-                    const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], true);
+                    const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], a_wall);
                     const ContactForce f = law_.force(c, wall_state_[w][i], lost);
                     p_.force[i] += f.on_i;
                     p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
@@ -399,7 +408,7 @@ private:
         const Vec3 d = p_.position[i] - wp.point;
         const double dist = d.norm();
         if (wp.behind || dist - p_.radius[i] > law_.range()) return std::nullopt;
-        return pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], true);
+        return pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], a_wall);
     }
 
     Particles p_;

@@ -61,7 +61,7 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     const auto& m = sc.material;
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
     const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
-    // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and no viscous damping.
+    // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and the scene's rolling damping η_r.
     const auto model = sc.rolling_model;
     const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
                                 : model == slump::RollingModel::epsd2         ? " rolling_friction epsd2"
@@ -82,13 +82,12 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
       << "fix m1 all property/global youngsModulus peratomtype " << m.youngs_modulus << "\n"
       << "fix m2 all property/global poissonsRatio peratomtype " << m.poisson_ratio << "\n"
       << "fix m3 all property/global coefficientRestitution peratomtypepair 1 " << m.restitution << "\n"
-      << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << m.friction << "\n"
-      << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n"
-      << (sc.rolling_resistance && model == slump::RollingModel::epsd
-              ? "fix m6 all property/global rollingStiffness scalar 2.25\n"
-                "fix m7 all property/global coefficientRollingViscousDamping peratomtypepair 1 0.0\n"
-              : "")
-      << "pair_style gran " << laws << "\npair_coeff * *\n"
+      << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << m.friction << "\n";
+    if (sc.rolling_resistance) s << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n";
+    if (sc.rolling_resistance && model == slump::RollingModel::epsd)
+        s << "fix m6 all property/global rollingStiffness scalar 2.25\n"
+          << "fix m7 all property/global coefficientRollingViscousDamping peratomtypepair 1 " << m.rolling_damping << "\n";
+    s << "pair_style gran " << laws << "\npair_coeff * *\n"
       << "timestep " << sc.dt_s << "\n"
       << "fix gravi " << pile << " gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"
       << "fix cone all mesh/surface file cone.stl type 1\n"

@@ -51,6 +51,7 @@ io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label)
     add("restitution", s.material.restitution, "1");
     add("sliding friction", s.material.friction, "1");
     add("rolling friction (EPSD)", s.rolling_resistance ? s.material.rolling_friction : 0.0, "1");
+    add("rolling damping eta_r (EPSD dashpot)", s.rolling_resistance ? s.material.rolling_damping : 0.0, "1");
     add("surface tension gamma", s.wet ? s.liquid.surface_tension_n_per_m : 0.0, "N/m");
     add("contact angle theta", s.liquid.contact_angle.degrees(), "deg");
     add("moisture content (Eq. 5)", s.liquid.moisture_content, "kg/kg");

@@ -35,6 +35,7 @@ std::string canonical(const SlumpScene& s) {
     // Absent at their defaults, so that keys of scenes from before they existed stay valid.
     if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);
     if (s.rolling_model != RollingModel::epsd) add("rolling_model", static_cast<double>(s.rolling_model));
+    if (m.rolling_damping > 0) add("eta_r", m.rolling_damping);
     add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
     add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
     add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));

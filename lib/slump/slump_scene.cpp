@@ -16,7 +16,7 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed"}},
     {"floor", {"rough", "rough_diameter_mm"}},
     {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
-                 "rolling_model"}},
+                 "rolling_model", "rolling_damping"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
                 "bridge_variant"}},
     {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "rest_speed_m_per_s", "rest_duration_s", "skin_mm"}},
@@ -69,6 +69,12 @@ SlumpScene load_slump_scene(const std::string& path) {
         else if (*m == "constant_torque") s.rolling_model = RollingModel::constant_torque;
         else throw InputError(r.where("contact.rolling_model", "contact.rolling_model"), *m, "\"epsd\", \"epsd2\" or \"constant_torque\"");
     }
+    // Ai et al.'s dashpot belongs to their model C (epsd); LIGGGHTS' epsd2 and cdt have none.
+    const bool dashpot = s.rolling_resistance && s.rolling_model == RollingModel::epsd;
+    s.material.rolling_damping = r.checked("contact.rolling_damping", 0, [&](double x, const std::string& f) {
+        if (!(x >= 0 && x <= 1)) throw InputError(f, format_number(x), "[0, 1]");
+        if (x > 0 && !dashpot) throw InputError(f, format_number(x), "0 unless rolling_model = \"epsd\" (only Ai's model C has the dashpot)");
+    });
 
     s.wet = r.boolean("liquid.wet").value_or(true);
     s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);

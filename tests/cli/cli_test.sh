@@ -165,6 +165,31 @@ case $case_name in
     grep -E '^\| +1.4 \|' "$work/sweep.md" | awk -F'|' 'NF > 10' >"$work/rows"
     [ "$(wc -l <"$work/rows")" -eq 2 ] || fail "sweep rows: $(cat "$work/rows")"
     grep -qFf "$work/rows" "$md" || fail "slump rows in the report differ from demscale sweep" ;;
+  export_liggghts_deck)
+    # The deck carries the scene's own values; steps by hand: lift 65 mm / 0.3 m/s / 2e-5 s = 10833,
+    # spread 0.2 s / 2e-5 s = 10000. The data file holds the settled fill: same count, same spheres.
+    { printf '[contact]\nrolling_damping = 0.3\n'; cat "$src/data/scenes/small_wet.toml"; } >"$work/damped.toml"
+    expect 0 'LIGGGHTS-PUBLIC has no Mikami bridge' -- "$demscale" export liggghts --scene "$work/damped.toml" --out "$work/deck"
+    for line in 'fix m1 all property/global youngsModulus peratomtype 5e\+06' 'poissonsRatio peratomtype 0.3$' \
+        'coefficientRestitution peratomtypepair 1 0.5$' 'coefficientFriction peratomtypepair 1 0.5$' \
+        'coefficientRollingFriction peratomtypepair 1 0.1$' 'rollingStiffness scalar 2.25$' \
+        'coefficientRollingViscousDamping peratomtypepair 1 0.3$' '^pair_style gran model hertz tangential history rolling_friction epsd3$' \
+        '^timestep 2e-05$' '^neighbor 0.0006 bin$' 'gravity 9.81 vector 0.0 0.0 -1.0$' \
+        '^fix lift all move/mesh mesh cone linear 0.0 0.0 0.3$' '^run 10833$' '^run 10000$'; do
+      grep -Eq -- "$line" "$work/deck/in.slump" || { cat "$work/deck/in.slump" >&2; fail "deck lacks /$line/"; }
+    done
+    n=$(($(wc -l <"$work/deck/settled.csv") - 2))
+    [ "$n" -gt 300 ] || fail "settled fill of $n spheres"
+    grep -q "^$n atoms$" "$work/deck/particles.data" || fail "data file does not hold the $n settled spheres"
+    grep -q "written by demscale export liggghts: small-wet-test, $n spheres" "$work/deck/in.slump" || fail "deck header count"
+    # Atom lines: id type diameter density x y z; diameter 2 R = 4.4 mm, density 2200 kg/m^3 (the scene's).
+    [ "$(awk 'NF == 7 && $3 == 0.0044000000000000003 && $4 == 2200' "$work/deck/particles.data" | wc -l)" -eq "$n" ] \
+      || fail "atoms with another diameter or density"
+    [ "$(grep -c 'endfacet' "$work/deck/cone.stl")" -gt 50 ] || fail "cone mesh has too few facets"
+    # Without rolling resistance the deck asks for no rolling law and sets no rolling coefficient.
+    { printf '[contact]\nrolling_resistance = false\n'; cat "$src/data/scenes/small_wet.toml"; } >"$work/free.toml"
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/free.toml" --out "$work/free"
+    ! grep -q 'rolling_friction\|Rolling' "$work/free/in.slump" || fail "rolling law in a free-rolling deck" ;;
   slump_sigint_then_resume)
     # The small scene with shorter phases (the test runs it twice, and under sanitizers too).
     sed -e 's/^settle_time_s = .*/settle_time_s = 0.08/' -e 's/^spread_time_s = .*/spread_time_s = 0.05/' \

@@ -5,14 +5,18 @@
 //    torque, LIGGGHTS' cdt): M = −μ_r R* F_el ω_roll/|ω_roll|, with the elastic normal force
 //    F_el = k_n δ as cdt uses. No state; at rest the torque flips with ω every step, so a stopped
 //    sphere chatters (Ai et al.'s known drawback of model A). Ledger: loses |M| |ω_roll| dt.
-//  RollingSpring<Stiffness> — elastic–plastic rolling spring without a dashpot: incremental torque
-//    ΔM = −k_r ω_roll dt, ω_roll the relative angular velocity in the tangent plane, plastic limit
-//    |M| ≤ μ_r R* |F_n|. Torque on i is M, on j is −M. Two stiffness rules:
-//      RollingEpsd  — Ai et al. (2011), model type C: k_r = 2.25 k_n μ_r² R*² (their dashpot left
-//                     out; LIGGGHTS' epsd3 with rollingStiffness 2.25 and no viscous damping).
-//      RollingEpsd2 — Iwashita & Oda (1998), LIGGGHTS' epsd2: k_r = k_t R*², no dashpot.
-//    Ledger: a step at the limit loses the work −M·Δθ less the spring's energy change; the stiffness
-//    change is booked apart.
+//  RollingSpring<Stiffness> — elastic–plastic rolling spring with an optional dashpot: incremental
+//    torque ΔM = −k_r ω_roll dt, ω_roll the relative angular velocity in the tangent plane, plastic
+//    limit |M| ≤ μ_r R* |F_n|. Ai et al. (2011), model type C, adds the dashpot M_d = −C_r ω_roll,
+//    C_r = η_r · 2√(I_r k_r) with η_r = Material::rolling_damping (0: no dashpot) and I_r the pair's
+//    rolling inertia; it acts only below full mobilisation (their f = 0, as LIGGGHTS). Torque on i
+//    is M + M_d, on j the opposite. Two stiffness rules:
+//      RollingEpsd  — Ai et al. (2011), model type C: k_r = 2.25 k_n μ_r² R*² (LIGGGHTS' epsd3 with
+//                     rollingStiffness 2.25 and coefficientRollingViscousDamping η_r).
+//      RollingEpsd2 — Iwashita & Oda (1998), LIGGGHTS' epsd2: k_r = k_t R*² (scenes give it no dashpot,
+//                     as LIGGGHTS).
+//    Ledger: a step at the limit loses the work −M·Δθ less the spring's energy change; the dashpot
+//    loses C_r |ω_roll|² dt; the stiffness change is booked apart.
 #pragma once
 
 #include <cmath>
@@ -57,9 +61,9 @@ struct RollingSpring {
         Vec3 torque = Vec3::Zero();  // elastic rolling torque carried between steps, N m
         double stiffness = 0;        // k_r at the last step, N m/rad (for the ledger)
     };
-    double mu_r;
+    double mu_r, eta_r;
 
-    explicit RollingSpring(const Material& m) : mu_r(m.rolling_friction) {}
+    explicit RollingSpring(const Material& m) : mu_r(m.rolling_friction), eta_r(m.rolling_damping) {}
 
     double stiffness(const ContactPair& c, double normal_stiffness, double tangential_stiffness) const {
         return Stiffness::of(c, normal_stiffness, tangential_stiffness, mu_r);
@@ -80,6 +84,10 @@ struct RollingSpring {
         if (magnitude > limit) {  // full mobilisation: plastic rolling
             s.torque *= limit / magnitude;
             lost.rolling += -s.torque.dot(w_roll) * c.dt - (kr > 0 ? 0.5 * (s.torque.squaredNorm() - before) / kr : 0.0);
+        } else if (eta_r > 0 && c.rolling_compliance > 0) {  // dashpot below full mobilisation only (Ai et al. 2011, f = 0)
+            const double c_r = eta_r * 2.0 * std::sqrt(kr / c.rolling_compliance);  // C_r = η_r 2√(I_r k_r)
+            lost.rolling += c_r * w_roll.squaredNorm() * c.dt;
+            return s.torque - c_r * w_roll;
         }
         return s.torque;
     }
