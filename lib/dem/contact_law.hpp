@@ -42,6 +42,9 @@ struct ContactLaw {
     // Interaction range beyond touching surfaces, m (0 for dry laws).
     double range() const { return cohesion.range(); }
 
+    // Whether anything acts on a pair whose surfaces are apart (a liquid bridge holds it).
+    bool acts_across_gap(const State& s) const { return cohesion.holds(s.cohesion); }
+
     // η_r of the rolling dashpot (0 when the rolling law has none): the engine then sets the
     // pair's rolling compliance.
     double rolling_damping() const {

@@ -270,26 +270,27 @@ private:
         return c;
     }
 
-    // What listed pair q contributes now (nothing beyond the law's reach: its history is released).
+    // What listed pair q contributes now, into out; false when nothing acts (out left zero): beyond
+    // the law's reach, or apart with no bridge holding it (most listed pairs of a wet scene, whose
+    // list reaches the rupture gap). Its springs are then released.
     template <class L>
-    DEMSCALE_HOT PairResult pair_result(ListedPair& q, double reach, L& lost) const {
-        PairResult out;
+    DEMSCALE_HOT bool pair_result(ListedPair& q, double reach, L& lost, PairResult& out) const {
         const std::size_t i = q.i, j = q.j;
         const Vec3 d = p_.position[i] - p_.position[j];
-        const double dist = d.norm();
-        if (dist - p_.radius[i] - p_.radius[j] > reach) {
+        const double dist = d.norm(), gap = dist - p_.radius[i] - p_.radius[j];
+        if (gap > reach || (gap > 0 && !law_.acts_across_gap(q.state))) {
             law_.release(q.state, lost);
-            return out;
+            return false;
         }
         const ContactPair c =
             pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j);
         const ContactForce f = law_.force(c, q.state, lost);
         out.force_i = f.on_i;
-        if (c.overlap <= 0) return out;  // a bridge across a gap: central force, no torque
+        if (c.overlap <= 0) return true;  // a bridge across a gap: central force, no torque
         const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
         out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
         out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
-        return out;
+        return true;
     }
 
     void compute_forces() {
@@ -300,11 +301,14 @@ private:
         if constexpr (Ledger) thread_ledger_.assign(static_cast<std::size_t>(omp_get_max_threads()), ThreadLedger{});
         for (std::size_t i = 0; i < p_.size(); ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
         if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
-            // One thread: each pair adds to its two particles at once. Every particle still sums its
-            // pairs in ascending pair order, after gravity: the same bits as the gather below.
+            // One thread: each pair that acts adds to its two particles at once. Every particle still
+            // sums its pairs in ascending pair order, after gravity: the same bits as the gather
+            // below (which also adds the zeros of pairs that do not act; sums that start at +0 or
+            // a non-zero value are unchanged by adding ±0).
             Lost lost;
             for (auto& q : pairs_) {
-                const PairResult r = pair_result(q, reach, lost);
+                PairResult r;
+                if (!pair_result(q, reach, lost, r)) continue;
                 p_.force[q.i] += r.force_i, p_.torque[q.i] += r.torque_i;
                 p_.force[q.j] -= r.force_i, p_.torque[q.j] += r.torque_j;
             }
@@ -315,8 +319,11 @@ private:
             {
                 Lost lost;
 #pragma omp for schedule(static)
-                for (long k = 0; k < n_pairs; ++k)
-                    results_[static_cast<std::size_t>(k)] = pair_result(pairs_[static_cast<std::size_t>(k)], reach, lost);
+                for (long k = 0; k < n_pairs; ++k) {
+                    PairResult& r = results_[static_cast<std::size_t>(k)];
+                    r = PairResult{};
+                    pair_result(pairs_[static_cast<std::size_t>(k)], reach, lost, r);
+                }
                 if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())].lost += lost;
             }
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
@@ -389,7 +396,8 @@ private:
             // Evaluated again on a copy of the contact's history (the step's own results are not kept).
             ListedPair q = pairs_[incidence_[e] / 2];
             NoDissipation none;
-            const PairResult r = pair_result(q, law_.range(), none);
+            PairResult r;
+            pair_result(q, law_.range(), none, r);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p_.position[i] - p_.position[other]).norm() - p_.radius[i] - p_.radius[other];

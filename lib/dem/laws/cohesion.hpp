@@ -24,6 +24,7 @@ struct CohesionNone {
     template <class Lost>
     double force(const ContactPair&, State&, Lost&) const { return 0.0; }
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
+    bool holds(const State&) const { return false; }
 };
 
 struct CohesionMikamiBridge {
@@ -34,6 +35,9 @@ struct CohesionMikamiBridge {
     double radius;                                  // R of the equal spheres, m
     double gamma;                                   // surface tension, N/m
     std::optional<bridge::MikamiCoefficients> wall; // sphere–wall; nullopt: dry walls
+
+    // Whether a bridge holds this pair: across a gap, nothing else can act on it.
+    bool holds(const State& s) const { return s.bridged; }
 
     // Range beyond contact the neighbour search must cover: the rupture gap, m.
     double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
