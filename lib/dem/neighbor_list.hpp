@@ -1,6 +1,7 @@
 // Verlet neighbour list built with a cell list. A pair is listed when its surfaces are closer than
-// range + skin, where range is the contact law's reach beyond touching (the bridge's rupture gap),
-// so no bridge is missed. Rebuilt when any particle has moved more than skin/2 since the last build.
+// range + skin. The engine asks for range 0: only touching can start an interaction, and it keeps
+// the pairs a liquid bridge holds on its own (Simulation::rebuild), so no bridge is missed.
+// Rebuilt when any particle has moved more than skin/2 since the last build.
 #pragma once
 
 #include <cstdint>

@@ -33,7 +33,7 @@ class Simulation {
 public:
     Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
-          neighbors_(law_.range(), skin) {
+          neighbors_(0.0, skin) {
         require_positive(dt, "dt");
         require_positive(skin, "skin");
         wall_state_.assign(walls_.size(), std::vector<typename Law::State>(p_.size()));
@@ -198,19 +198,28 @@ private:
         }
     }
 
-    // New pair list; contact history moves with the pairs that are still listed (both lists are
-    // sorted by (i, j), so one merge pass finds them).
+    // New pair list: the pairs within the skin of touching (only those can touch before the next
+    // rebuild), with the history of those already listed, plus every pair a liquid bridge still
+    // holds, however far it has stretched. The list need not reach the rupture gap: a bridge forms
+    // only at contact, and this keeps it until it ruptures. Both lists are sorted by (i, j), so
+    // one merge pass does it, and the acting pairs keep their order (the same bits as a list that
+    // reaches the rupture gap).
     void rebuild() {
         std::vector<ListedPair> old;
         old.swap(pairs_);
         neighbors_.build(p_);
-        pairs_.reserve(neighbors_.pairs().size());
+        const auto& near = neighbors_.pairs();
+        pairs_.reserve(near.size());
         std::size_t k = 0;
-        for (const auto& [i, j] : neighbors_.pairs()) {
-            while (k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j)) ++k;
+        for (const auto& [i, j] : near) {
+            for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k)
+                if (law_.acts_across_gap(old[k].state)) pairs_.push_back(old[k]);
             const bool kept = k < old.size() && old[k].i == i && old[k].j == j;
             pairs_.push_back({i, j, kept ? old[k].state : typename Law::State{}});
+            if (kept) ++k;
         }
+        for (; k < old.size(); ++k)
+            if (law_.acts_across_gap(old[k].state)) pairs_.push_back(old[k]);
         index_incidence();
     }
 
@@ -271,8 +280,7 @@ private:
     }
 
     // What listed pair q contributes now, into out; false when nothing acts (out left zero): beyond
-    // the law's reach, or apart with no bridge holding it (most listed pairs of a wet scene, whose
-    // list reaches the rupture gap). Its springs are then released.
+    // the law's reach, or apart with no bridge holding it. Its springs are then released.
     template <class L>
     DEMSCALE_HOT bool pair_result(ListedPair& q, double reach, L& lost, PairResult& out) const {
         const std::size_t i = q.i, j = q.j;

@@ -6,6 +6,7 @@
 #include <omp.h>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 #include "bridge/mikami.hpp"
 #include "dem/simulation.hpp"
@@ -104,7 +105,9 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     p.add({0, 0, 0}, r, 2200);
     p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
     Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
-    CHECK(sim.neighbors().cutoff_gap() >= k.hhat_rupture * r);  // the search reaches the rupture gap
+    // The list reaches only the skin: held at 0.1-0.3 R the bridge lies beyond it, so it is the
+    // engine that keeps the bridged pair listed across the rebuilds these moves cause.
+    CHECK(sim.neighbors().cutoff_gap() < 0.3 * r);
     auto held_at = [&](double hhat) {
         sim.particles().position[1] = Vec3(2 * r + hhat * r, 0, 0);
         sim.refresh_forces();
@@ -119,6 +122,65 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     CHECK(held_at(0.1) == 0.0);                     // back within range: no bridge until contact
     held_at(0.0);                                   // contact: forms again
     CHECK(held_at(0.1) == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, 0.1)).epsilon(1e-12));
+}
+
+TEST_CASE("A bridge stretched far beyond the list's reach pulls until it ruptures", "[dem][bridge][neighbors]") {
+    const double r = 1e-3, gamma = 0.074, vhat = 0.05544, skin = 0.01 * r;
+    const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+    Particles p;
+    p.add({0, 0, 0}, r, 2200, {-0.5, 0, 0});  // touching (the bridge forms), flying apart fast
+    p.add({2 * r, 0, 0}, r, 2200, {0.5, 0, 0}); // enough to escape the bridge's pull
+    Simulation sim(p, Wet(Material{}, CohesionMikamiBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, skin);
+    int stretched = 0, ruptured = 0;
+    const std::size_t builds0 = sim.neighbors().builds();
+    while (ruptured < 50) {
+        sim.step();
+        const auto& q = sim.particles();
+        const double hhat = ((q.position[1] - q.position[0]).norm() - 2 * r) / r;
+        REQUIRE(hhat > 0);
+        const double expected = hhat <= k.hhat_rupture ? M_PI * r * gamma * bridge::mikami_fhat(k, hhat) : 0.0;
+        INFO("step " << sim.steps() << ", gap " << hhat << " R");
+        REQUIRE(q.force[0].x() == Approx(expected).epsilon(1e-12));  // pulls 0 towards +x
+        hhat <= k.hhat_rupture ? ++stretched : ++ruptured;
+    }
+    CHECK(stretched > 100);
+    CHECK(sim.neighbors().builds() - builds0 > 20);  // rebuilt again and again while the bridge held
+}
+
+TEST_CASE("A wet scene's results do not depend on the neighbour skin, to the bit", "[dem][bridge][neighbors]") {
+    // The skin only decides how often the list is rebuilt and how many idle pairs it carries; the
+    // acting pairs and their order are the same, so trajectories must agree exactly. A skin of
+    // 1.5 R reaches far past the rupture gap (0.38 R) with every pair that could ever act listed.
+    const double r = 1e-3;
+    const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
+    Material m;
+    m.friction = 0.5;
+    m.rolling_friction = 0.1;
+    using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.3, 0.3);
+    Particles p;
+    for (int a = 0; a < 5; ++a)
+        for (int b = 0; b < 5; ++b)
+            for (int c = 0; c < 5; ++c) p.add(2.05 * r * Vec3(a, b, c), r, 2200, Vec3(u(rng), u(rng), u(rng)));
+    auto run = [&](double skin) {
+        Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, 0.074, std::nullopt}), {}, Vec3::Zero(), 2e-6, skin);
+        double most_bridge_energy = 0;
+        for (int n = 0; n < 4000; ++n) {
+            sim.step();
+            if (n % 200 == 0) most_bridge_energy = std::min(most_bridge_energy, sim.energy().stored.bridge);
+        }
+        return std::tuple(sim.particles(), sim.neighbors().builds(), most_bridge_energy);
+    };
+    const auto [tight, tight_builds, tight_bridges] = run(0.02 * r);
+    const auto [wide, wide_builds, wide_bridges] = run(1.5 * r);
+    CHECK(tight_builds > 10 * wide_builds);
+    CHECK(tight_bridges < 0);  // bridges formed
+    CHECK(tight_bridges == wide_bridges);
+    CHECK(tight.position == wide.position);
+    CHECK(tight.velocity == wide.velocity);
+    CHECK(tight.angular_velocity == wide.angular_velocity);
 }
 
 TEST_CASE("Bad scenes stop with the particle and the step", "[dem][errors]") {
