@@ -39,7 +39,7 @@ struct CohesionMikamiBridge {
     // Whether a bridge holds this pair: across a gap, nothing else can act on it.
     bool holds(const State& s) const { return s.bridged; }
 
-    // Range beyond contact the neighbour search must cover: the rupture gap, m.
+    // Range beyond contact over which a bridge still acts: the rupture gap, m.
     double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
 
     // Attractive force magnitude (N) along −n on particle i; lost: what this step dissipates is added.
