@@ -14,7 +14,7 @@ void NeighborList::build(const Particles& p) {
     const std::size_t n = p.size();
     if (n < 2) return;
     const double r_max = *std::max_element(p.radius.begin(), p.radius.end());
-    const double cell = 2.0 * r_max + range_ + skin_;
+    const double cell = 2.0 * r_max + skin_;
     Vec3 lo = p.position[0], hi = p.position[0];
     for (const auto& x : p.position) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
     std::array<long, 3> dims{};
@@ -36,7 +36,7 @@ void NeighborList::build(const Particles& p) {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) order[fill[index[i]]++] = static_cast<std::uint32_t>(i);
 
-    const double gap = range_ + skin_;
+    const double gap = skin_;
     const long count = static_cast<long>(n);
 #pragma omp parallel
     {

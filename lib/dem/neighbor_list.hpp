@@ -1,7 +1,7 @@
 // Verlet neighbour list built with a cell list. A pair is listed when its surfaces are closer than
-// range + skin. The engine asks for range 0: only touching can start an interaction, and it keeps
-// the pairs a liquid bridge holds on its own (Simulation::rebuild), so no bridge is missed.
-// Rebuilt when any particle has moved more than skin/2 since the last build.
+// the skin: only touching starts an interaction, and the engine keeps the pairs a liquid bridge
+// holds on its own (Simulation::rebuild), so no bridge is missed. Rebuilt when any particle has
+// moved more than skin/2 since the last build.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +14,7 @@ namespace demscale::dem {
 
 class NeighborList {
 public:
-    NeighborList(double range, double skin) : range_(range), skin_(skin) {}
+    explicit NeighborList(double skin) : skin_(skin) {}
 
     // Pairs (i < j) in ascending order of (i, j); never two fixed spheres.
     void build(const Particles& p);
@@ -29,10 +29,10 @@ public:
         pairs_ = std::move(pairs);
         builds_ = builds;
     }
-    double cutoff_gap() const { return range_ + skin_; }
+    double cutoff_gap() const { return skin_; }
 
 private:
-    double range_, skin_;
+    double skin_;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
     std::vector<Vec3> built_at_;
     std::size_t builds_ = 0;

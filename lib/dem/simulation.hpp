@@ -33,7 +33,7 @@ class Simulation {
 public:
     Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
-          neighbors_(0.0, skin) {
+          neighbors_(skin) {
         require_positive(dt, "dt");
         require_positive(skin, "skin");
         wall_state_.assign(walls_.size(), std::vector<typename Law::State>(p_.size()));

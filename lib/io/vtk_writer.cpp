@@ -9,7 +9,7 @@
 namespace demscale::io {
 
 std::vector<int> contact_counts(const dem::Particles& p) {
-    dem::NeighborList touching(0.0, 1e-12);
+    dem::NeighborList touching(1e-12);
     touching.build(p);
     std::vector<int> n(p.size(), 0);
     for (const auto& [i, j] : touching.pairs())
