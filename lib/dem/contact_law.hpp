@@ -63,7 +63,7 @@ struct ContactLaw {
             fn = elastic + damping;
             lost.normal_damping += -damping * c.v_normal * c.dt;
         }
-        const double attraction = cohesion.force(c, s.cohesion, lost);
+        const double attraction = cohesion.pull(c.overlap, c.wall, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
         if (c.overlap > 0) {
             out.tangential = tangential.force(c, fn, s.tangential, lost);
@@ -75,6 +75,17 @@ struct ContactLaw {
             rolling.release(s.rolling, lost);
         }
         return out;
+    }
+
+    // force() for two spheres apart (overlap δ < 0, m), which only a bridge can hold: the
+    // attraction alone (N, along −n on i), the springs released. The engine's shortcut for a
+    // bridged pair across a gap, which needs neither the pair's velocities nor its masses.
+    template <class Lost>
+    DEMSCALE_HOT double pull_across_gap(double overlap, State& s, Lost& lost) const {
+        const double attraction = cohesion.pull(overlap, false, s.cohesion, lost);
+        tangential.release(s.tangential, lost);
+        rolling.release(s.rolling, lost);
+        return attraction;
     }
 
     // The pair moved out of range: forget its history, booking what its springs still held.

@@ -279,26 +279,36 @@ private:
         return c;
     }
 
-    // What listed pair q contributes now, into out; false when nothing acts (out left zero): beyond
-    // the law's reach, or apart with no bridge holding it. Its springs are then released.
+    // What a listed pair contributes: nothing (beyond the law's reach, or apart with no bridge
+    // holding it), a central force only (a bridge across a gap), or a contact's force and torques.
+    enum class Acts { nothing, central, contact };
+
+    // What listed pair q contributes now, into out (left zero where it does not act; a central
+    // force leaves the torques zero). A pair that stops acting has its springs released.
     template <class L>
-    DEMSCALE_HOT bool pair_result(ListedPair& q, double reach, L& lost, PairResult& out) const {
+    DEMSCALE_HOT Acts pair_result(ListedPair& q, double reach, L& lost, PairResult& out) const {
         const std::size_t i = q.i, j = q.j;
         const Vec3 d = p_.position[i] - p_.position[j];
         const double dist = d.norm(), gap = dist - p_.radius[i] - p_.radius[j];
         if (gap > reach || (gap > 0 && !law_.acts_across_gap(q.state))) {
             law_.release(q.state, lost);
-            return false;
+            return Acts::nothing;
+        }
+        // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
+        // overlap and the force are computed as pair_geometry and force() compute them (same bits).
+        if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0) {
+            out.force_i = (0.0 - law_.pull_across_gap(overlap, q.state, lost)) * (d / dist);
+            return Acts::central;
         }
         const ContactPair c =
             pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j);
         const ContactForce f = law_.force(c, q.state, lost);
         out.force_i = f.on_i;
-        if (c.overlap <= 0) return true;  // a bridge across a gap: central force, no torque
+        if (c.overlap <= 0) return Acts::central;  // gap rounded to 0: the same central pull
         const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
         out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
         out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
-        return true;
+        return Acts::contact;
     }
 
     void compute_forces() {
@@ -311,14 +321,15 @@ private:
         if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
             // One thread: each pair that acts adds to its two particles at once. Every particle still
             // sums its pairs in ascending pair order, after gravity: the same bits as the gather
-            // below (which also adds the zeros of pairs that do not act; sums that start at +0 or
-            // a non-zero value are unchanged by adding ±0).
+            // below (which also adds the zeros of pairs that do not act, and the zero torques of
+            // central forces; sums that start at +0 or a non-zero value are unchanged by adding ±0).
             Lost lost;
             for (auto& q : pairs_) {
                 PairResult r;
-                if (!pair_result(q, reach, lost, r)) continue;
-                p_.force[q.i] += r.force_i, p_.torque[q.i] += r.torque_i;
-                p_.force[q.j] -= r.force_i, p_.torque[q.j] += r.torque_j;
+                const Acts acts = pair_result(q, reach, lost, r);
+                if (acts == Acts::nothing) continue;
+                p_.force[q.i] += r.force_i, p_.force[q.j] -= r.force_i;
+                if (acts == Acts::contact) p_.torque[q.i] += r.torque_i, p_.torque[q.j] += r.torque_j;
             }
             if constexpr (Ledger) thread_ledger_[0].lost += lost;
         } else {

@@ -126,6 +126,14 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     CHECK(held_at(0.1) == 0.0);                     // back within range: no bridge until contact
     held_at(0.0);                                   // contact: forms again
     CHECK(held_at(0.1) == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, 0.1)).epsilon(1e-12));
+    // Overlapping (at rest): the bridge pulls with its contact value F̂(0) against Hertz's push,
+    // 4/3 E* √(R/2) δ^(3/2) with E* = E / (2(1 − ν²)) (by hand, not the law's own).
+    const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
+    for (double delta_hat : {1e-4, 1e-3, 1e-2}) {
+        INFO("overlap = " << delta_hat << " R");
+        const double delta = delta_hat * r, hertz = 4.0 / 3.0 * e_star * std::sqrt(r / 2) * std::pow(delta, 1.5);
+        CHECK(held_at(-delta_hat) == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, 0.0) - hertz).epsilon(1e-12));
+    }
 }
 
 TEST_CASE("A bridge stretched far beyond the list's reach pulls until it ruptures", "[dem][bridge][neighbors]") {
