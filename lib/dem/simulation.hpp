@@ -368,6 +368,10 @@ private:
                 const std::size_t i = static_cast<std::size_t>(ii);
                 if (p_.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls_.size(); ++w) {
+                    if (surely_farther_than(walls_[w], p_.position[i], time_, p_.radius[i] + reach)) {
+                        law_.release(wall_state_[w][i], lost);  // as the range check below would
+                        continue;
+                    }
                     const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
                     if (wp.behind) {
 #pragma omp critical

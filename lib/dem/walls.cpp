@@ -5,15 +5,6 @@
 
 namespace demscale::dem {
 
-Vec3 FrustumWall::offset(double t) const {
-    if (move_end <= move_start) return Vec3::Zero();
-    return velocity * (std::clamp(t, move_start, move_end) - move_start);
-}
-
-Vec3 FrustumWall::velocity_at(double t) const {
-    return (move_end > move_start && t >= move_start && t < move_end) ? velocity : Vec3::Zero();
-}
-
 namespace {
 
 WallPoint closest(const PlaneWall& w, const Vec3& x, double) {

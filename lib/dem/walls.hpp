@@ -6,6 +6,8 @@
 //                a time window (the slump cone being lifted). Analytic, no mesh.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <variant>
 
 #include "dem/particles.hpp"
@@ -26,8 +28,14 @@ struct FrustumWall {
     double move_start = 0;            // s
     double move_end = 0;              // s (no motion when move_end <= move_start)
 
-    Vec3 offset(double t) const;          // displacement of the wall at time t
-    Vec3 velocity_at(double t) const;
+    // Displacement of the wall at time t, m.
+    Vec3 offset(double t) const {
+        if (move_end <= move_start) return Vec3::Zero();
+        return velocity * (std::clamp(t, move_start, move_end) - move_start);
+    }
+    Vec3 velocity_at(double t) const {
+        return (move_end > move_start && t >= move_start && t < move_end) ? velocity : Vec3::Zero();
+    }
 };
 
 using Wall = std::variant<PlaneWall, FrustumWall>;
@@ -38,5 +46,23 @@ struct WallPoint {
     bool behind = false;     // the centre is on the wrong side of a one-sided wall
 };
 WallPoint closest_wall_point(const Wall& wall, const Vec3& centre, double t);
+
+// Whether the centre lies farther than `distance` (m, > 0) from the wall's surface at time t, and
+// on its side: a bound the engine checks before closest_wall_point, for the particles no wall
+// touches. Cheaper (no hypot, no closest point in 3D) and conservative: it answers true only
+// where |centre − closest point| exceeds distance by a relative margin far above rounding, so
+// skipping those particles changes no result.
+inline bool surely_farther_than(const Wall& wall, const Vec3& centre, double t, double distance) {
+    const double bound = distance * (1.0 + 1e-9);
+    if (const auto* plane = std::get_if<PlaneWall>(&wall)) return (centre - plane->point).dot(plane->normal) > bound;
+    // The frustum in the (ρ, z) half-plane of the centre: distance to its meridian segment.
+    const FrustumWall& w = std::get<FrustumWall>(wall);
+    const Vec3 rel = centre - (w.base_centre + w.offset(t));
+    const double rho = std::sqrt(rel.x() * rel.x() + rel.y() * rel.y());
+    const double dr = w.top_radius - w.bottom_radius, dz = w.height;
+    const double s = std::clamp(((rho - w.bottom_radius) * dr + rel.z() * dz) / (dr * dr + dz * dz), 0.0, 1.0);
+    const double across = rho - (w.bottom_radius + s * dr), up = rel.z() - s * dz;
+    return across * across + up * up > bound * bound;
+}
 
 }  // namespace demscale::dem

@@ -1,6 +1,7 @@
 // Analytic walls: closest points against hand geometry, motion windows, and a bounce.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 
 #include "dem/simulation.hpp"
 
@@ -56,4 +57,34 @@ TEST_CASE("A sphere bounces off a cylinder wall with the law's restitution", "[d
     for (int n = 0; n < 40000 && sim.particles().velocity[0].x() > -0.1; ++n) sim.step();
     for (int n = 0; n < 2000; ++n) sim.step();  // well clear of the wall
     CHECK(sim.particles().velocity[0].x() == Approx(-0.6 * 0.2).epsilon(0.005));
+}
+
+TEST_CASE("The engine's cheap wall bound agrees with the exact distance, on the safe side", "[dem][walls]") {
+    // surely_farther_than lets the engine skip particles no wall reaches. It must never skip one
+    // within reach (a missed contact), and must skip the far ones (or it saves nothing). For random
+    // centres around a moving cone, a cylinder and a tilted plane, at their exact distance e
+    // (closest_wall_point): false at e itself, true a millionth below it.
+    FrustumWall lifted{};
+    lifted.velocity = Vec3(0, 0, 0.3);
+    lifted.move_end = 0.2;
+    const FrustumWall cylinder{Vec3(0.001, -0.002, 0), 0.01, 0.01, 0.05, Vec3::Zero(), 0, 0};
+    const PlaneWall tilted{Vec3(0, 0, -0.005), Vec3(0.3, -0.2, 1).normalized()};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-0.04, 0.04), height(-0.004, 0.1);
+    for (const Wall& wall : {Wall(lifted), Wall(cylinder), Wall(tilted)}) {
+        int far = 0;
+        for (int n = 0; n < 20000; ++n) {
+            const Vec3 x(u(rng), u(rng), height(rng));
+            const double t = 0.1;
+            const WallPoint wp = closest_wall_point(wall, x, t);
+            if (wp.behind) continue;
+            const double e = (x - wp.point).norm();
+            INFO("wall " << wall.index() << ", centre " << x.transpose() << ", distance " << e);
+            REQUIRE_FALSE(surely_farther_than(wall, x, t, e));
+            REQUIRE(surely_farther_than(wall, x, t, e * (1 - 1e-6)));
+            far += surely_farther_than(wall, x, t, 1.37e-3);
+            REQUIRE(surely_farther_than(wall, x, t, 1.37e-3) == (e > 1.37e-3 * (1 + 1e-9)));
+        }
+        CHECK(far > 10000);
+    }
 }
