@@ -51,7 +51,7 @@ struct CohesionMikamiBridge {
     // Attractive force magnitude (N) along −n on particle i, at overlap δ (m, < 0 a gap) with a
     // sphere or a wall; lost: what this step dissipates is added. Needs no more of the pair than δ.
     template <class Lost>
-    double pull(double overlap, bool with_wall, State& s, Lost& lost) const {
+    DEMSCALE_HOT double pull(double overlap, bool with_wall, State& s, Lost& lost) const {
         if (with_wall && !wall) return 0.0;
         const bridge::MikamiCoefficients& law = with_wall ? *wall : k;
         if (overlap >= 0) {  // touching: a bridge forms if there was none, and pulls with F(ĥ = 0)
