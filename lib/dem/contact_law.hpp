@@ -56,33 +56,28 @@ struct ContactLaw {
     template <class Lost>
     DEMSCALE_HOT ContactForce force(const ContactPair& c, State& s, Lost& lost) const {
         ContactForce out;
-        double fn = 0, elastic = 0;
-        if (c.overlap > 0) {
-            const double damping = normal.damping_force(c);
-            elastic = normal.elastic_force(c);
-            fn = elastic + damping;
-            lost.normal_damping += -damping * c.v_normal * c.dt;
+        if (c.overlap <= 0) {  // surfaces apart: a bridge's pull at most, the springs released
+            out.on_i = (0.0 - pull_apart(c.overlap, c.wall, s, lost)) * c.normal;
+            return out;
         }
+        const double damping = normal.damping_force(c);
+        const double elastic = normal.elastic_force(c), fn = elastic + damping;
+        lost.normal_damping += -damping * c.v_normal * c.dt;
         const double attraction = cohesion.pull(c.overlap, c.wall, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
-        if (c.overlap > 0) {
-            out.tangential = tangential.force(c, fn, s.tangential, lost);
-            out.on_i += out.tangential;
-            // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
-            out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
-        } else {  // surfaces apart: tangential and rolling springs are released
-            tangential.release(s.tangential, lost);
-            rolling.release(s.rolling, lost);
-        }
+        out.tangential = tangential.force(c, fn, s.tangential, lost);
+        out.on_i += out.tangential;
+        // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
+        out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
         return out;
     }
 
-    // force() for two spheres apart (overlap δ < 0, m), which only a bridge can hold: the
-    // attraction alone (N, along −n on i), the springs released. The engine's shortcut for a
-    // bridged pair across a gap, which needs neither the pair's velocities nor its masses.
+    // force() for surfaces apart (overlap δ ≤ 0, m), where only a bridge can act: its attraction
+    // (N, along −n on i), the springs released. It needs neither velocities nor masses, so the
+    // engine calls it directly for a bridged pair across a gap.
     template <class Lost>
-    DEMSCALE_HOT double pull_across_gap(double overlap, State& s, Lost& lost) const {
-        const double attraction = cohesion.pull(overlap, false, s.cohesion, lost);
+    DEMSCALE_HOT double pull_apart(double overlap, bool with_wall, State& s, Lost& lost) const {
+        const double attraction = cohesion.pull(overlap, with_wall, s.cohesion, lost);
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
         return attraction;

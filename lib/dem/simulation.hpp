@@ -297,7 +297,7 @@ private:
         // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
         // overlap and the force are computed as pair_geometry and force() compute them (same bits).
         if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0) {
-            out.force_i = (0.0 - law_.pull_across_gap(overlap, q.state, lost)) * (d / dist);
+            out.force_i = (0.0 - law_.pull_apart(overlap, false, q.state, lost)) * (d / dist);
             return Acts::central;
         }
         const ContactPair c =

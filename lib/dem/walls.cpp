@@ -18,9 +18,8 @@ WallPoint closest(const FrustumWall& w, const Vec3& x, double t) {
     const Vec3 rel = x - base;
     const double rho = std::hypot(rel.x(), rel.y());
     const Vec3 radial = rho > 0 ? Vec3(rel.x() / rho, rel.y() / rho, 0) : Vec3::UnitX();
-    const double dr = w.top_radius - w.bottom_radius, dz = w.height;
-    const double s = std::clamp(((rho - w.bottom_radius) * dr + rel.z() * dz) / (dr * dr + dz * dz), 0.0, 1.0);
-    const Vec3 point = base + (w.bottom_radius + s * dr) * radial + s * dz * Vec3::UnitZ();
+    const double s = w.meridian_fraction(rho, rel.z());
+    const Vec3 point = base + (w.bottom_radius + s * (w.top_radius - w.bottom_radius)) * radial + s * w.height * Vec3::UnitZ();
     return {point, w.velocity_at(t), false};
 }
 

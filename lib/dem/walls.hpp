@@ -36,6 +36,12 @@ struct FrustumWall {
     Vec3 velocity_at(double t) const {
         return (move_end > move_start && t >= move_start && t < move_end) ? velocity : Vec3::Zero();
     }
+    // Where the point (ρ, z) (m, relative to the base centre, ρ from the axis) projects on the
+    // meridian segment (r_b, 0) → (r_t, H): 0 at the bottom edge, 1 at the top.
+    double meridian_fraction(double rho, double z) const {
+        const double dr = top_radius - bottom_radius;
+        return std::clamp(((rho - bottom_radius) * dr + z * height) / (dr * dr + height * height), 0.0, 1.0);
+    }
 };
 
 using Wall = std::variant<PlaneWall, FrustumWall>;
@@ -59,9 +65,8 @@ inline bool surely_farther_than(const Wall& wall, const Vec3& centre, double t, 
     const FrustumWall& w = std::get<FrustumWall>(wall);
     const Vec3 rel = centre - (w.base_centre + w.offset(t));
     const double rho = std::sqrt(rel.x() * rel.x() + rel.y() * rel.y());
-    const double dr = w.top_radius - w.bottom_radius, dz = w.height;
-    const double s = std::clamp(((rho - w.bottom_radius) * dr + rel.z() * dz) / (dr * dr + dz * dz), 0.0, 1.0);
-    const double across = rho - (w.bottom_radius + s * dr), up = rel.z() - s * dz;
+    const double s = w.meridian_fraction(rho, rel.z());
+    const double across = rho - (w.bottom_radius + s * (w.top_radius - w.bottom_radius)), up = rel.z() - s * w.height;
     return across * across + up * up > bound * bound;
 }
 

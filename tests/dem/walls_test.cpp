@@ -82,8 +82,9 @@ TEST_CASE("The engine's cheap wall bound agrees with the exact distance, on the 
             INFO("wall " << wall.index() << ", centre " << x.transpose() << ", distance " << e);
             REQUIRE_FALSE(surely_farther_than(wall, x, t, e));
             REQUIRE(surely_farther_than(wall, x, t, e * (1 - 1e-6)));
-            far += surely_farther_than(wall, x, t, 1.37e-3);
-            REQUIRE(surely_farther_than(wall, x, t, 1.37e-3) == (e > 1.37e-3 * (1 + 1e-9)));
+            const bool skipped = surely_farther_than(wall, x, t, 1.37e-3);
+            REQUIRE(skipped == (e > 1.37e-3 * (1 + 1e-9)));
+            far += skipped;
         }
         CHECK(far > 10000);
     }
