@@ -1,6 +1,7 @@
 // Tangential friction and rolling resistance on a plane, against rigid-body mechanics.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 
 #include "dem/simulation.hpp"
 
@@ -210,4 +211,30 @@ TEST_CASE("Rolling dashpot (Ai et al. 2011): a rocking sphere decays with dampin
     REQUIRE(undamped.peaks.size() >= 4);
     INFO("undamped: peaks " << undamped.peaks[1] << ", " << undamped.peaks[3] << " rad/s");
     CHECK(std::abs(undamped.peaks[3] / undamped.peaks[1]) > 0.99);  // seen: 0.998
+}
+
+TEST_CASE("The plastic limit test decides as |x| > limit does, without a root well inside", "[dem][friction][rolling]") {
+    // beyond_limit takes |x|² and skips the square root below limit²·(1 − 1e-12). Its answer must
+    // be the exact test's bit for bit, or trajectories change: checked at and around the boundary,
+    // ulp by ulp, and on non-finite input.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> exponent(-12, 3);
+    int sliding = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const double limit = std::pow(10.0, exponent(rng));
+        double norm2 = std::nextafter(limit * limit * (1 - 2e-12), 0.0);
+        for (int k = 0; k < 3000; ++k) {
+            const double exact = std::sqrt(norm2);
+            const double got = beyond_limit(norm2, limit);
+            REQUIRE(got == (exact > limit ? exact : 0.0));
+            sliding += got > 0;
+            norm2 = k < 1000 ? norm2 * (1 + 2e-15) : std::nextafter(norm2, HUGE_VAL);
+        }
+    }
+    CHECK(sliding > 0);
+    CHECK(beyond_limit(0.0, 0.0) == 0.0);
+    CHECK(beyond_limit(4.0, 0.0) == 2.0);
+    CHECK(beyond_limit(HUGE_VAL, 1.0) == HUGE_VAL);
+    CHECK(beyond_limit(std::nan(""), 1.0) == 0.0);
+    CHECK(beyond_limit(1.0, std::nan("")) == 0.0);
 }

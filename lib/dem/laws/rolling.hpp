@@ -23,6 +23,7 @@
 
 #include "dem/contact_pair.hpp"
 #include "dem/energy.hpp"
+#include "dem/laws/plastic_limit.hpp"
 #include "dem/material.hpp"
 
 namespace demscale::dem {
@@ -80,8 +81,8 @@ struct RollingSpring {
         if (s.stiffness > 0 && kr > 0) lost.spring_stiffness += 0.5 * before * (kr - s.stiffness) / (s.stiffness * kr);
         s.stiffness = kr;
         s.torque -= kr * c.dt * w_roll;
-        const double limit = mu_r * c.r_eff * std::abs(normal_force), magnitude = s.torque.norm();
-        if (magnitude > limit) {  // full mobilisation: plastic rolling
+        const double limit = mu_r * c.r_eff * std::abs(normal_force);
+        if (const double magnitude = beyond_limit(s.torque.squaredNorm(), limit)) {  // full mobilisation: plastic rolling
             s.torque *= limit / magnitude;
             lost.rolling += -s.torque.dot(w_roll) * c.dt - (kr > 0 ? 0.5 * (s.torque.squaredNorm() - before) / kr : 0.0);
         } else if (eta_r > 0 && c.rolling_compliance > 0) {  // dashpot below full mobilisation only (Ai et al. 2011, f = 0)

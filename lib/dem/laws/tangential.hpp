@@ -12,6 +12,7 @@
 
 #include "dem/contact_pair.hpp"
 #include "dem/energy.hpp"
+#include "dem/laws/plastic_limit.hpp"
 #include "dem/material.hpp"
 
 namespace demscale::dem {
@@ -61,8 +62,8 @@ struct TangentialHistory {
         s.spring += c.v_tangential * c.dt;
         const double damping = law.damping(st, c.m_eff);  // ≤ 0
         Vec3 f = -st * s.spring - damping * c.v_tangential;
-        const double limit = mu * std::abs(normal_force), magnitude = f.norm();
-        if (magnitude > limit) {  // sliding: cap at μF_n, spring consistent with the capped force
+        const double limit = mu * std::abs(normal_force);
+        if (const double magnitude = beyond_limit(f.squaredNorm(), limit)) {  // sliding: cap at μF_n, spring consistent
             f *= limit / magnitude;
             s.spring = st > 0 ? Vec3(-f / st) : Vec3::Zero();
             lost.friction += -f.dot(c.v_tangential) * c.dt - (0.5 * st * s.spring.squaredNorm() - stored_before);
