@@ -1,7 +1,7 @@
 // Verlet neighbour list built with a cell list. A pair is listed when its surfaces are closer than
 // the skin: only touching starts an interaction, and the engine keeps the pairs a liquid bridge
-// holds on its own (Simulation::rebuild), so no bridge is missed. Rebuilt when any particle has
-// moved more than skin/2 since the last build.
+// holds on its own (Simulation::rebuild), so no bridge is missed. Rebuilt when the two particles
+// that moved most since the last build have moved more than the skin between them.
 #pragma once
 
 #include <cstdint>

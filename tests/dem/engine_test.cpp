@@ -62,6 +62,33 @@ TEST_CASE("Neighbour list equals brute force, also after many rebuilds", "[dem][
     CHECK(touching > 0);  // the walks brought spheres into contact
 }
 
+TEST_CASE("Neighbour list: rebuilt once the two spheres that moved most could close the skin", "[dem][neighbors]") {
+    // Three spheres in a row, 1 mm radius, gaps of 1.05 skins: none listed. An unlisted pair can
+    // touch only after its spheres have moved a skin between them.
+    const double r = 1e-3, skin = 0.2e-3, pitch = 2 * r + 1.05 * skin;
+    Particles p;
+    for (int k = 0; k < 3; ++k) p.add(Vec3(k * pitch, 0, 0), r, 2500);
+    NeighborList list(skin);
+    list.build(p);
+    REQUIRE(list.pairs().empty());
+    // One sphere alone moves 0.9 skin towards its neighbour: still valid (the old rule, any sphere
+    // past skin/2, rebuilt here), and indeed nothing touches.
+    p.position[0].x() += 0.9 * skin;
+    CHECK_FALSE(list.needs_rebuild(p));
+    CHECK(brute_force_pairs(p, 0.0).empty());
+    // Its neighbour comes 0.11 skin towards it: together they could now have closed the gap.
+    p.position[1].x() -= 0.11 * skin;
+    CHECK(list.needs_rebuild(p));
+    // The rule does not ask which spheres moved (it is a bound): the two outer ones moving away,
+    // 0.45 skin each, keep the list; 0.56 and 0.45 rebuild it, though no gap closed.
+    p.position = {Vec3(0, 0, 0), Vec3(pitch, 0, 0), Vec3(2 * pitch, 0, 0)};
+    list.build(p);
+    p.position[0].x() -= 0.45 * skin, p.position[2].x() += 0.45 * skin;
+    CHECK_FALSE(list.needs_rebuild(p));
+    p.position[0].x() -= 0.11 * skin;
+    CHECK(list.needs_rebuild(p));
+}
+
 TEST_CASE("Free cloud with friction conserves linear and angular momentum", "[dem][conservation]") {
     Material m;
     m.youngs_modulus = 5e6;
