@@ -37,6 +37,8 @@ public:
         require_positive(dt, "dt");
         require_positive(skin, "skin");
         wall_state_.assign(walls_.size(), std::vector<typename Law::State>(p_.size()));
+        wall_engaged_.assign(walls_.size(), std::vector<std::uint8_t>(p_.size(), 0));
+        index_kicks();
         rebuild();
         compute_forces();
     }
@@ -57,7 +59,7 @@ public:
     }
 
     const Particles& particles() const { return p_; }
-    Particles& particles() { return p_; }
+    Particles& particles() { return p_; }  // to move particles or set velocities; masses stay as built
     std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
     // Takes a wall out of the scene (the slump cone after its lift), with its contact history.
@@ -68,6 +70,7 @@ public:
                 if (const auto c = wall_contact(walls_[index], i)) wall_work_ -= law_.stored_energy(*c, wall_state_[index][i]).total();
         walls_.erase(walls_.begin() + static_cast<long>(index));
         wall_state_.erase(wall_state_.begin() + static_cast<long>(index));
+        wall_engaged_.erase(wall_engaged_.begin() + static_cast<long>(index));
     }
 
     // Forces for the current state after particles were moved by hand (tests, prescribed motion).
@@ -91,13 +94,13 @@ public:
                          0.5 * p_.inertia[i] * p_.angular_velocity[i].squaredNorm();
             e.gravitational -= p_.mass[i] * gravity_.dot(p_.position[i]);
         }
-        for (const auto& q : pairs_) {
-            const std::size_t i = q.i, j = q.j;
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            const std::size_t i = pairs_[k].i, j = pairs_[k].j;
             const Vec3 d = p_.position[i] - p_.position[j];
             const double dist = d.norm();
             if (dist - p_.radius[i] - p_.radius[j] > law_.range()) continue;
             e.stored += law_.stored_energy(
-                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j), q.state);
+                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j), states_[k]);
         }
         for (std::size_t w = 0; w < walls_.size(); ++w)
             for (std::size_t i = 0; i < p_.size(); ++i)
@@ -122,7 +125,9 @@ public:
             raw(&wall_work_, sizeof wall_work_);
         const std::size_t builds = neighbors_.builds();
         raw(&builds, sizeof builds);
-        vec(neighbors_.built_at()), vec(pairs_);
+        std::vector<ListedPair> listed(pairs_.size());  // the checkpoint's record: pair and its history
+        for (std::size_t k = 0; k < pairs_.size(); ++k) listed[k] = {pairs_[k].i, pairs_[k].j, states_[k]};
+        vec(neighbors_.built_at()), vec(listed);
         for (const auto& w : wall_state_) vec(w);
         if (!out) throw std::runtime_error("cannot write checkpoint");
     }
@@ -149,11 +154,16 @@ public:
         std::size_t builds = 0;
         raw(&builds, sizeof builds);
         std::vector<Vec3> built_at;
-        vec(built_at), vec(pairs_);
+        std::vector<ListedPair> records;
+        vec(built_at), vec(records);
         std::vector<std::pair<std::uint32_t, std::uint32_t>> listed;
-        for (const auto& q : pairs_) listed.emplace_back(q.i, q.j);
+        pairs_.clear(), states_.clear();
+        for (const auto& q : records) listed.emplace_back(q.i, q.j), pairs_.push_back({q.i, q.j}), states_.push_back(q.state);
+        engaged_.assign(pairs_.size(), 1);  // not recorded: the first step evaluates every pair
         neighbors_.restore(std::move(built_at), std::move(listed), builds);
         for (auto& w : wall_state_) vec(w);
+        for (auto& w : wall_engaged_) w.assign(p_.size(), 1);
+        index_kicks();
         index_incidence();
     }
 
@@ -177,7 +187,10 @@ private:
     // States are written as bytes: plain fixed-size data only.
     static_assert(std::is_standard_layout_v<typename Law::State>);
 
-    struct ListedPair {
+    struct PairIndex {
+        std::uint32_t i, j;  // i < j
+    };
+    struct ListedPair {  // a checkpoint's record of one listed pair
         std::uint32_t i, j;
         typename Law::State state;
     };
@@ -190,11 +203,18 @@ private:
         double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
     };
 
+    // ½dt/m and ½dt/I of each particle, s/kg and s/(kg m²), for half_kick: the same bits as
+    // computing them there, without two divisions per particle and half step.
+    void index_kicks() {
+        kick_.resize(p_.size());
+        for (std::size_t i = 0; i < p_.size(); ++i) kick_[i] = {0.5 * dt_ / p_.mass[i], 0.5 * dt_ / p_.inertia[i]};
+    }
+
     void half_kick() {
         for (std::size_t i = 0; i < p_.size(); ++i) {
             if (p_.fixed[i]) continue;
-            p_.velocity[i] += 0.5 * dt_ / p_.mass[i] * p_.force[i];
-            p_.angular_velocity[i] += 0.5 * dt_ / p_.inertia[i] * p_.torque[i];
+            p_.velocity[i] += kick_[i].translation * p_.force[i];
+            p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
         }
     }
 
@@ -205,21 +225,26 @@ private:
     // one merge pass does it, and the acting pairs keep their order (the same bits as a list that
     // reaches the rupture gap).
     void rebuild() {
-        std::vector<ListedPair> old;
-        old.swap(pairs_);
+        std::vector<PairIndex> old;
+        std::vector<typename Law::State> old_states;
+        std::vector<std::uint8_t> old_engaged;
+        old.swap(pairs_), old_states.swap(states_), old_engaged.swap(engaged_);
         neighbors_.build(p_);
         const auto& near = neighbors_.pairs();
-        pairs_.reserve(near.size());
+        pairs_.reserve(near.size()), states_.reserve(near.size()), engaged_.reserve(near.size());
+        auto add = [&](PairIndex q, const typename Law::State& state, std::uint8_t engaged) {
+            pairs_.push_back(q), states_.push_back(state), engaged_.push_back(engaged);
+        };
+        auto keep_bridged = [&](std::size_t k) {
+            if (law_.acts_across_gap(old_states[k])) add(old[k], old_states[k], 1);
+        };
         std::size_t k = 0;
         for (const auto& [i, j] : near) {
-            for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k)
-                if (law_.acts_across_gap(old[k].state)) pairs_.push_back(old[k]);
-            const bool kept = k < old.size() && old[k].i == i && old[k].j == j;
-            pairs_.push_back({i, j, kept ? old[k].state : typename Law::State{}});
-            if (kept) ++k;
+            for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k) keep_bridged(k);
+            if (k < old.size() && old[k].i == i && old[k].j == j) add(old[k], old_states[k], old_engaged[k]), ++k;
+            else add({i, j}, typename Law::State{}, 0);
         }
-        for (; k < old.size(); ++k)
-            if (law_.acts_across_gap(old[k].state)) pairs_.push_back(old[k]);
+        for (; k < old.size(); ++k) keep_bridged(k);
         index_incidence();
     }
 
@@ -283,32 +308,48 @@ private:
     // holding it), a central force only (a bridge across a gap), or a contact's force and torques.
     enum class Acts { nothing, central, contact };
 
-    // What listed pair q contributes now, into out (left zero where it does not act; a central
-    // force leaves the torques zero). A pair that stops acting has its springs released.
+    // What listed pair (i, j) with history s contributes now, into out (left zero where it does not
+    // act; a central force leaves the torques zero). A pair that stops acting has its springs released.
     template <class L>
-    DEMSCALE_HOT Acts pair_result(ListedPair& q, double reach, L& lost, PairResult& out) const {
-        const std::size_t i = q.i, j = q.j;
+    DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, typename Law::State& s, double reach, L& lost,
+                                  PairResult& out) const {
         const Vec3 d = p_.position[i] - p_.position[j];
         const double dist = d.norm(), gap = dist - p_.radius[i] - p_.radius[j];
-        if (gap > reach || (gap > 0 && !law_.acts_across_gap(q.state))) {
-            law_.release(q.state, lost);
+        if (gap > reach || (gap > 0 && !law_.acts_across_gap(s))) {
+            law_.release(s, lost);
             return Acts::nothing;
         }
         // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
         // overlap and the force are computed as pair_geometry and force() compute them (same bits).
         if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0) {
-            out.force_i = (0.0 - law_.pull_apart(overlap, false, q.state, lost)) * (d / dist);
+            out.force_i = (0.0 - law_.pull_apart(overlap, false, s, lost)) * (d / dist);
             return Acts::central;
         }
         const ContactPair c =
             pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j);
-        const ContactForce f = law_.force(c, q.state, lost);
+        const ContactForce f = law_.force(c, s, lost);
         out.force_i = f.on_i;
         if (c.overlap <= 0) return Acts::central;  // gap rounded to 0: the same central pull
         const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
         out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
         out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
         return Acts::contact;
+    }
+
+    // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is
+    // zero) that is surely apart is passed over: it would do nothing and keep its zero state, so it
+    // needs no square root and no access to its state. The margin on the squared distance (1e-12
+    // relative) is far above rounding: the decision is pair_result's own.
+    template <class L>
+    DEMSCALE_HOT Acts listed_result(std::size_t k, double reach, L& lost, PairResult& out) {
+        const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+        if (!engaged_[k]) {
+            const double touch = p_.radius[i] + p_.radius[j];
+            if ((p_.position[i] - p_.position[j]).squaredNorm() > touch * touch * (1 + 1e-12)) return Acts::nothing;
+        }
+        const Acts acts = pair_result(i, j, states_[k], reach, lost, out);
+        engaged_[k] = acts != Acts::nothing;  // released: zero again
+        return acts;
     }
 
     void compute_forces() {
@@ -324,10 +365,11 @@ private:
             // below (which also adds the zeros of pairs that do not act, and the zero torques of
             // central forces; sums that start at +0 or a non-zero value are unchanged by adding ±0).
             Lost lost;
-            for (auto& q : pairs_) {
+            for (std::size_t k = 0; k < pairs_.size(); ++k) {
                 PairResult r;
-                const Acts acts = pair_result(q, reach, lost, r);
+                const Acts acts = listed_result(k, reach, lost, r);
                 if (acts == Acts::nothing) continue;
+                const PairIndex q = pairs_[k];
                 p_.force[q.i] += r.force_i, p_.force[q.j] -= r.force_i;
                 if (acts == Acts::contact) p_.torque[q.i] += r.torque_i, p_.torque[q.j] += r.torque_j;
             }
@@ -341,7 +383,7 @@ private:
                 for (long k = 0; k < n_pairs; ++k) {
                     PairResult& r = results_[static_cast<std::size_t>(k)];
                     r = PairResult{};
-                    pair_result(pairs_[static_cast<std::size_t>(k)], reach, lost, r);
+                    listed_result(static_cast<std::size_t>(k), reach, lost, r);
                 }
                 if constexpr (Ledger) thread_ledger_[static_cast<std::size_t>(omp_get_thread_num())].lost += lost;
             }
@@ -359,6 +401,8 @@ private:
             }
         }
         std::string wall_error;
+        wall_bounds_.clear();
+        for (const Wall& wall : walls_) wall_bounds_.emplace_back(wall, time_);
 #pragma omp parallel if (n * static_cast<long>(walls_.size()) > parallel_threshold)
         {
             Lost lost;
@@ -368,8 +412,9 @@ private:
                 const std::size_t i = static_cast<std::size_t>(ii);
                 if (p_.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls_.size(); ++w) {
-                    if (surely_farther_than(walls_[w], p_.position[i], time_, p_.radius[i] + reach)) {
-                        law_.release(wall_state_[w][i], lost);  // as the range check below would
+                    std::uint8_t& engaged = wall_engaged_[w][i];
+                    if (wall_bounds_[w].surely_farther_than(p_.position[i], p_.radius[i] + reach)) {
+                        if (engaged) law_.release(wall_state_[w][i], lost), engaged = 0;  // as the range check below would
                         continue;
                     }
                     const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
@@ -382,9 +427,10 @@ private:
                     const Vec3 d = p_.position[i] - wp.point;
                     const double dist = d.norm();
                     if (dist - p_.radius[i] > reach) {
-                        law_.release(wall_state_[w][i], lost);
+                        law_.release(wall_state_[w][i], lost), engaged = 0;
                         continue;
                     }
+                    engaged = 1;
                     const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], a_wall);
                     const ContactForce f = law_.force(c, wall_state_[w][i], lost);
                     p_.force[i] += f.on_i;
@@ -417,10 +463,11 @@ private:
         if (!p_.position[i].allFinite()) return why + ": its position is not finite";
         for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
             // Evaluated again on a copy of the contact's history (the step's own results are not kept).
-            ListedPair q = pairs_[incidence_[e] / 2];
+            const PairIndex q = pairs_[incidence_[e] / 2];
+            typename Law::State copy = states_[incidence_[e] / 2];
             NoDissipation none;
             PairResult r;
-            pair_result(q, law_.range(), none, r);
+            pair_result(q.i, q.j, copy, law_.range(), none, r);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p_.position[i] - p_.position[other]).norm() - p_.radius[i] - p_.radius[other];
@@ -443,16 +490,27 @@ private:
     }
 
     Particles p_;
+    struct Kick {
+        double translation, rotation;  // ½dt/m, ½dt/I
+    };
+    std::vector<Kick> kick_;
     Law law_;
     std::vector<Wall> walls_;
+    std::vector<WallBound> wall_bounds_;  // this step's, one per wall
     Vec3 gravity_;
     double dt_;
     NeighborList neighbors_;
-    std::vector<ListedPair> pairs_;
+    // The listed pairs in (i, j) order, each with its contact history and whether that history may
+    // be non-zero (0: surely zero). Apart, three arrays: the pair loop reads a pair's history only
+    // when it may act.
+    std::vector<PairIndex> pairs_;
+    std::vector<typename Law::State> states_;
+    std::vector<std::uint8_t> engaged_;
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
     std::vector<ThreadLedger> thread_ledger_;
-    std::vector<std::vector<typename Law::State>> wall_state_;
+    std::vector<std::vector<typename Law::State>> wall_state_;     // per wall, per particle
+    std::vector<std::vector<std::uint8_t>> wall_engaged_;         // per wall, per particle: 0 when its state is surely zero
     Dissipation dissipated_;  // so far, J
     double wall_work_ = 0;    // J done by walls on particles so far
     double time_ = 0;

@@ -60,7 +60,7 @@ TEST_CASE("A sphere bounces off a cylinder wall with the law's restitution", "[d
 }
 
 TEST_CASE("The engine's cheap wall bound agrees with the exact distance, on the safe side", "[dem][walls]") {
-    // surely_farther_than lets the engine skip particles no wall reaches. It must never skip one
+    // WallBound lets the engine skip particles no wall reaches. It must never skip one
     // within reach (a missed contact), and must skip the far ones (or it saves nothing). For random
     // centres around a moving cone, a cylinder and a tilted plane, at their exact distance e
     // (closest_wall_point): false at e itself, true a millionth below it.
@@ -80,9 +80,10 @@ TEST_CASE("The engine's cheap wall bound agrees with the exact distance, on the 
             if (wp.behind) continue;
             const double e = (x - wp.point).norm();
             INFO("wall " << wall.index() << ", centre " << x.transpose() << ", distance " << e);
-            REQUIRE_FALSE(surely_farther_than(wall, x, t, e));
-            REQUIRE(surely_farther_than(wall, x, t, e * (1 - 1e-6)));
-            const bool skipped = surely_farther_than(wall, x, t, 1.37e-3);
+            const WallBound bound(wall, t);
+            REQUIRE_FALSE(bound.surely_farther_than(x, e));
+            REQUIRE(bound.surely_farther_than(x, e * (1 - 1e-6)));
+            const bool skipped = bound.surely_farther_than(x, 1.37e-3);
             REQUIRE(skipped == (e > 1.37e-3 * (1 + 1e-9)));
             far += skipped;
         }
