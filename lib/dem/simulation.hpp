@@ -38,7 +38,7 @@ public:
         require_positive(skin, "skin");
         wall_state_.assign(walls_.size(), std::vector<typename Law::State>(p_.size()));
         wall_engaged_.assign(walls_.size(), std::vector<std::uint8_t>(p_.size(), 0));
-        index_kicks();
+        index_particles();
         rebuild();
         compute_forces();
     }
@@ -100,7 +100,7 @@ public:
             const double dist = d.norm();
             if (dist - p_.radius[i] - p_.radius[j] > law_.range()) continue;
             e.stored += law_.stored_energy(
-                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j), states_[k]);
+                pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], shapes_[k], j), states_[k]);
         }
         for (std::size_t w = 0; w < walls_.size(); ++w)
             for (std::size_t i = 0; i < p_.size(); ++i)
@@ -163,7 +163,7 @@ public:
         neighbors_.restore(std::move(built_at), std::move(listed), builds);
         for (auto& w : wall_state_) vec(w);
         for (auto& w : wall_engaged_) w.assign(p_.size(), 1);
-        index_kicks();
+        index_particles();
         index_incidence();
     }
 
@@ -187,6 +187,9 @@ private:
     // States are written as bytes: plain fixed-size data only.
     static_assert(std::is_standard_layout_v<typename Law::State>);
 
+    struct PairShape {  // what a pair's radii and masses give
+        double r_eff, sqrt_r_eff, m_eff;  // R* (m), √R* (m^½), m* (kg)
+    };
     struct PairIndex {
         std::uint32_t i, j;  // i < j
     };
@@ -203,11 +206,12 @@ private:
         double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
     };
 
-    // ½dt/m and ½dt/I of each particle, s/kg and s/(kg m²), for half_kick: the same bits as
-    // computing them there, without two divisions per particle and half step.
-    void index_kicks() {
-        kick_.resize(p_.size());
-        for (std::size_t i = 0; i < p_.size(); ++i) kick_[i] = {0.5 * dt_ / p_.mass[i], 0.5 * dt_ / p_.inertia[i]};
+    // What the particles' radii and masses give, once (the same bits as computing it where used):
+    // ½dt/m and ½dt/I for half_kick, s/kg and s/(kg m²), and each particle's shape against a wall.
+    void index_particles() {
+        kick_.resize(p_.size()), wall_shapes_.resize(p_.size());
+        for (std::size_t i = 0; i < p_.size(); ++i)
+            kick_[i] = {0.5 * dt_ / p_.mass[i], 0.5 * dt_ / p_.inertia[i]}, wall_shapes_[i] = pair_shape(i, a_wall);
     }
 
     void half_kick() {
@@ -249,7 +253,7 @@ private:
     }
 
     // For each particle, the pairs it belongs to in ascending pair order (CSR), with its side:
-    // entry = 2·pair + (0 if it is i, 1 if it is j).
+    // entry = 2·pair + (0 if it is i, 1 if it is j); and each pair's shape.
     void index_incidence() {
         incidence_start_.assign(p_.size() + 1, 0);
         for (const auto& q : pairs_) ++incidence_start_[q.i + 1], ++incidence_start_[q.j + 1];
@@ -261,12 +265,17 @@ private:
             incidence_[fill[pairs_[k].j]++] = 2 * k + 1;
         }
         results_.assign(pairs_.size(), PairResult{});
+        shapes_.resize(pairs_.size());
+        for (std::size_t k = 0; k < pairs_.size(); ++k) shapes_[k] = pair_shape(pairs_[k].i, pairs_[k].j);
     }
 
-    // Effective mass of a pair: the mobile one's alone when the other is fixed (like a wall).
-    double pair_mass(std::size_t i, std::size_t j) const {
-        const double mi = p_.mass[i], mj = p_.mass[j];
-        return p_.fixed[i] ? mj : p_.fixed[j] ? mi : mi * mj / (mi + mj);
+    // R*, √R* and m* of particle i with j, or with a wall (j = a_wall: i's own radius and mass). m*
+    // is the mobile one's mass alone when the other is fixed (like a wall).
+    PairShape pair_shape(std::size_t i, std::size_t j) const {
+        const double ri = p_.radius[i], mi = p_.mass[i];
+        if (j == a_wall) return {ri, std::sqrt(ri), mi};
+        const double rj = p_.radius[j], mj = p_.mass[j], r_eff = ri * rj / (ri + rj);
+        return {r_eff, std::sqrt(r_eff), p_.fixed[i] ? mj : p_.fixed[j] ? mi : mi * mj / (mi + mj)};
     }
 
     static constexpr std::size_t a_wall = static_cast<std::size_t>(-1);
@@ -277,17 +286,19 @@ private:
     }
 
     // Contact of particle i with partner j (or a_wall) moving with velocity vj and spin wj, radius rj
-    // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already needed it).
+    // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already needed it),
+    // with the pair's shape (shapes_ or wall_shapes_).
     DEMSCALE_HOT ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
-                              double m_eff, std::size_t j) const {
+                                           const PairShape& shape, std::size_t j) const {
         const bool wall = j == a_wall;
         ContactPair c;
         const double ri = p_.radius[i];
         c.overlap = ri + rj - dist;
         c.normal = d / dist;
-        c.r_eff = wall ? ri : ri * rj / (ri + rj);
+        c.r_eff = shape.r_eff;
+        c.sqrt_r_eff = shape.sqrt_r_eff;
         c.contact_radius = c.overlap > 0 ? std::sqrt(c.r_eff * c.overlap) : 0.0;
-        c.m_eff = m_eff;
+        c.m_eff = shape.m_eff;
         c.dt = dt_;
         c.wall = wall;
         if (c.overlap <= 0) {  // apart: only cohesion acts, and it needs the gap alone
@@ -308,11 +319,11 @@ private:
     // holding it), a central force only (a bridge across a gap), or a contact's force and torques.
     enum class Acts { nothing, central, contact };
 
-    // What listed pair (i, j) with history s contributes now, into out (left zero where it does not
+    // What listed pair (i, j) of that shape, with history s, contributes now, into out (left zero where it does not
     // act; a central force leaves the torques zero). A pair that stops acting has its springs released.
     template <class L>
-    DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, typename Law::State& s, double reach, L& lost,
-                                  PairResult& out) const {
+    DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, const PairShape& shape, typename Law::State& s, double reach,
+                                  L& lost, PairResult& out) const {
         const Vec3 d = p_.position[i] - p_.position[j];
         const double dist = d.norm(), gap = dist - p_.radius[i] - p_.radius[j];
         if (gap > reach || (gap > 0 && !law_.acts_across_gap(s))) {
@@ -326,7 +337,7 @@ private:
             return Acts::central;
         }
         const ContactPair c =
-            pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], pair_mass(i, j), j);
+            pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], shape, j);
         const ContactForce f = law_.force(c, s, lost);
         out.force_i = f.on_i;
         if (c.overlap <= 0) return Acts::central;  // gap rounded to 0: the same central pull
@@ -347,7 +358,7 @@ private:
             const double touch = p_.radius[i] + p_.radius[j];
             if ((p_.position[i] - p_.position[j]).squaredNorm() > touch * touch * (1 + 1e-12)) return Acts::nothing;
         }
-        const Acts acts = pair_result(i, j, states_[k], reach, lost, out);
+        const Acts acts = pair_result(i, j, shapes_[k], states_[k], reach, lost, out);
         engaged_[k] = acts != Acts::nothing;  // released: zero again
         return acts;
     }
@@ -431,7 +442,7 @@ private:
                         continue;
                     }
                     engaged = 1;
-                    const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], a_wall);
+                    const ContactPair c = pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, wall_shapes_[i], a_wall);
                     const ContactForce f = law_.force(c, wall_state_[w][i], lost);
                     p_.force[i] += f.on_i;
                     p_.torque[i] += (-(p_.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
@@ -467,7 +478,7 @@ private:
             typename Law::State copy = states_[incidence_[e] / 2];
             NoDissipation none;
             PairResult r;
-            pair_result(q.i, q.j, copy, law_.range(), none, r);
+            pair_result(q.i, q.j, shapes_[incidence_[e] / 2], copy, law_.range(), none, r);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p_.position[i] - p_.position[other]).norm() - p_.radius[i] - p_.radius[other];
@@ -486,7 +497,7 @@ private:
         const Vec3 d = p_.position[i] - wp.point;
         const double dist = d.norm();
         if (wp.behind || dist - p_.radius[i] > law_.range()) return std::nullopt;
-        return pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, p_.mass[i], a_wall);
+        return pair_geometry(i, d, dist, wp.velocity, Vec3::Zero(), 0.0, wall_shapes_[i], a_wall);
     }
 
     Particles p_;
@@ -506,6 +517,8 @@ private:
     std::vector<PairIndex> pairs_;
     std::vector<typename Law::State> states_;
     std::vector<std::uint8_t> engaged_;
+    std::vector<PairShape> shapes_;       // per listed pair
+    std::vector<PairShape> wall_shapes_;  // per particle, against any wall
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
     std::vector<ThreadLedger> thread_ledger_;

@@ -20,14 +20,14 @@ struct NormalHertz {
     // Tangent normal stiffness S_n = dF_el/dδ, which scales the damping.
     double stiffness(const ContactPair& c) const { return 2.0 * e_star * c.contact_radius; }
     double elastic_force(const ContactPair& c) const {
-        return 4.0 / 3.0 * e_star * std::sqrt(c.r_eff) * c.overlap * std::sqrt(c.overlap);
+        return 4.0 / 3.0 * e_star * c.sqrt_r_eff * c.overlap * std::sqrt(c.overlap);
     }
     double damping_force(const ContactPair& c) const {
         return 2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(stiffness(c) * c.m_eff) * c.v_normal;
     }
     // Stored energy 8/15 E* √R* δ^(5/2).
     double elastic_energy(const ContactPair& c) const {
-        return 8.0 / 15.0 * e_star * std::sqrt(c.r_eff) * std::pow(c.overlap, 2.5);
+        return 8.0 / 15.0 * e_star * c.sqrt_r_eff * std::pow(c.overlap, 2.5);
     }
 };
 
