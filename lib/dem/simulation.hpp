@@ -286,8 +286,8 @@ private:
     }
 
     // Contact of particle i with partner j (or a_wall) moving with velocity vj and spin wj, radius rj
-    // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already needed it),
-    // with the pair's shape (shapes_ or wall_shapes_).
+    // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already
+    // needed it), with the pair's shape (shapes_ or wall_shapes_).
     DEMSCALE_HOT ContactPair pair_geometry(std::size_t i, const Vec3& d, double dist, const Vec3& vj, const Vec3& wj, double rj,
                                            const PairShape& shape, std::size_t j) const {
         const bool wall = j == a_wall;
@@ -319,8 +319,9 @@ private:
     // holding it), a central force only (a bridge across a gap), or a contact's force and torques.
     enum class Acts { nothing, central, contact };
 
-    // What listed pair (i, j) of that shape, with history s, contributes now, into out (left zero where it does not
-    // act; a central force leaves the torques zero). A pair that stops acting has its springs released.
+    // What listed pair (i, j) of that shape, with history s, contributes now, into out (left zero
+    // where it does not act; a central force leaves the torques zero). A pair that stops acting
+    // has its springs released.
     template <class L>
     DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, const PairShape& shape, typename Law::State& s, double reach,
                                   L& lost, PairResult& out) const {
