@@ -425,8 +425,11 @@ private:
                 if (p_.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls_.size(); ++w) {
                     std::uint8_t& engaged = wall_engaged_[w][i];
+                    auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
+                        if (engaged) law_.release(wall_state_[w][i], lost), engaged = 0;
+                    };
                     if (wall_bounds_[w].surely_farther_than(p_.position[i], p_.radius[i] + reach)) {
-                        if (engaged) law_.release(wall_state_[w][i], lost), engaged = 0;  // as the range check below would
+                        out_of_reach();  // as the range check below would
                         continue;
                     }
                     const WallPoint wp = closest_wall_point(walls_[w], p_.position[i], time_);
@@ -439,7 +442,7 @@ private:
                     const Vec3 d = p_.position[i] - wp.point;
                     const double dist = d.norm();
                     if (dist - p_.radius[i] > reach) {
-                        law_.release(wall_state_[w][i], lost), engaged = 0;
+                        out_of_reach();
                         continue;
                     }
                     engaged = 1;
