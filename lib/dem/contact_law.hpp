@@ -33,17 +33,22 @@ struct ContactLaw {
     explicit ContactLaw(const Material& m, Cohesion c = {})
         : normal(m), tangential(m), cohesion(std::move(c)), rolling(m) {}
 
-    struct State {
-        [[no_unique_address]] typename Tangential::State tangential;
-        [[no_unique_address]] typename Cohesion::State cohesion;
-        [[no_unique_address]] typename Rolling::State rolling;
+    // A pair's contact history. Lost = Dissipation: as the ledger needs it; NoDissipation: without
+    // the springs' last stiffnesses (16 bytes less per pair with both springs).
+    template <class Lost>
+    struct StateFor {
+        [[no_unique_address]] typename Tangential::template StateFor<Lost> tangential;
+        [[no_unique_address]] typename Cohesion::template StateFor<Lost> cohesion;
+        [[no_unique_address]] typename Rolling::template StateFor<Lost> rolling;
     };
+    using State = StateFor<Dissipation>;
 
     // Interaction range beyond touching surfaces, m (0 for dry laws).
     double range() const { return cohesion.range(); }
 
     // Whether anything acts on a pair whose surfaces are apart (a liquid bridge holds it).
-    bool acts_across_gap(const State& s) const { return cohesion.holds(s.cohesion); }
+    template <class Lost>
+    bool acts_across_gap(const StateFor<Lost>& s) const { return cohesion.holds(s.cohesion); }
 
     // η_r of the rolling dashpot (0 when the rolling law has none): the engine then sets the
     // pair's rolling compliance.
@@ -54,7 +59,7 @@ struct ContactLaw {
 
     // lost: what this step dissipates is added (Dissipation), or nothing is booked (NoDissipation).
     template <class Lost>
-    DEMSCALE_HOT ContactForce force(const ContactPair& c, State& s, Lost& lost) const {
+    DEMSCALE_HOT ContactForce force(const ContactPair& c, StateFor<Lost>& s, Lost& lost) const {
         ContactForce out;
         if (c.overlap <= 0) {  // surfaces apart: a bridge's pull at most, the springs released
             out.on_i = (0.0 - pull_apart(c.overlap, c.wall, s, lost)) * c.normal;
@@ -76,7 +81,7 @@ struct ContactLaw {
     // (N, along −n on i), the springs released. It needs neither velocities nor masses, so the
     // engine calls it directly for a bridged pair across a gap.
     template <class Lost>
-    DEMSCALE_HOT double pull_apart(double overlap, bool with_wall, State& s, Lost& lost) const {
+    DEMSCALE_HOT double pull_apart(double overlap, bool with_wall, StateFor<Lost>& s, Lost& lost) const {
         const double attraction = cohesion.pull(overlap, with_wall, s.cohesion, lost);
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
@@ -85,14 +90,15 @@ struct ContactLaw {
 
     // The pair moved out of range: forget its history, booking what its springs still held.
     template <class Lost>
-    void release(State& s, Lost& lost) const {
+    void release(StateFor<Lost>& s, Lost& lost) const {
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
         s = {};
     }
 
     // What this contact holds now (its state as the last force evaluation left it), J.
-    StoredEnergy stored_energy(const ContactPair& c, const State& s) const {
+    template <class Lost>
+    StoredEnergy stored_energy(const ContactPair& c, const StateFor<Lost>& s) const {
         StoredEnergy e;
         e.bridge = cohesion.stored_energy(c, s.cohesion);
         if (c.overlap > 0) {

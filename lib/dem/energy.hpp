@@ -5,6 +5,8 @@
 // mid-step velocity).
 #pragma once
 
+#include <type_traits>
+
 namespace demscale::dem {
 
 // Energy lost by each mechanism, J.
@@ -35,6 +37,20 @@ struct NoDissipation {
     [[no_unique_address]] Discard normal_damping, friction, rolling, bridge, spring_stiffness;
     constexpr NoDissipation& operator+=(const NoDissipation&) { return *this; }
 };
+
+// Whether a law books its losses (Dissipation) or an engine without a ledger runs it (NoDissipation).
+template <class Lost>
+inline constexpr bool books_losses = !std::is_same_v<Lost, NoDissipation>;
+
+// A history spring's stiffness at the last step, N/m or N m/rad: the ledger books its change. An
+// engine without the ledger keeps none, so each pair's state is 8 bytes shorter per spring (the
+// pair loop reads less memory).
+template <class Lost>
+struct LastStiffness {
+    double value = 0;
+};
+template <>
+struct LastStiffness<NoDissipation> {};
 
 // Energy held by the contacts now, J.
 struct StoredEnergy {

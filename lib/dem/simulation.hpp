@@ -30,13 +30,16 @@ namespace demscale::dem {
 // energy() then reports kinetic, gravitational and stored energy only).
 template <class Law, bool Ledger = true>
 class Simulation {
+    using Lost = std::conditional_t<Ledger, Dissipation, NoDissipation>;  // what the laws book into
+    using LawState = typename Law::template StateFor<Lost>;              // a contact's history
+
 public:
     Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
           neighbors_(skin) {
         require_positive(dt, "dt");
         require_positive(skin, "skin");
-        wall_state_.assign(walls_.size(), std::vector<typename Law::State>(p_.size()));
+        wall_state_.assign(walls_.size(), std::vector<LawState>(p_.size()));
         wall_engaged_.assign(walls_.size(), std::vector<std::uint8_t>(p_.size(), 0));
         index_particles();
         rebuild();
@@ -119,6 +122,8 @@ public:
             raw(v.data(), n * sizeof(v[0]));
         };
         raw(checkpoint_magic, sizeof checkpoint_magic);
+        const std::uint8_t ledger = Ledger;  // the histories' layout depends on it
+        raw(&ledger, sizeof ledger);
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species), vec(p_.fixed);
         raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
@@ -146,7 +151,14 @@ public:
         };
         char magic[sizeof checkpoint_magic];
         raw(magic, sizeof magic);
-        if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0) throw std::runtime_error("not a demscale checkpoint");
+        if (std::memcmp(magic, checkpoint_magic, sizeof magic) != 0)
+            throw std::runtime_error(std::string("not a demscale checkpoint of this version (") + checkpoint_magic +
+                                     "; one from an older demscale cannot be resumed: start the run again)");
+        std::uint8_t ledger = 0;
+        raw(&ledger, sizeof ledger);
+        if (ledger != Ledger)
+            throw std::runtime_error(std::string("checkpoint written with the energy ledger ") + (ledger ? "on" : "off") +
+                                     ": resume it with the ledger " + (ledger ? "on" : "off") + " too");
         vec(p_.position), vec(p_.velocity), vec(p_.angular_velocity), vec(p_.force), vec(p_.torque);
         vec(p_.radius), vec(p_.mass), vec(p_.inertia), vec(p_.species), vec(p_.fixed);
         raw(&time_, sizeof time_), raw(&steps_, sizeof steps_), raw(&dissipated_, sizeof dissipated_),
@@ -181,11 +193,11 @@ public:
     }
 
 private:
-    static constexpr char checkpoint_magic[16] = "demscale-ckpt-4";
+    static constexpr char checkpoint_magic[16] = "demscale-ckpt-5";
     // Below this many items a loop runs serially: thread start-up would cost more than the work.
     static constexpr long parallel_threshold = 512;
     // States are written as bytes: plain fixed-size data only.
-    static_assert(std::is_standard_layout_v<typename Law::State>);
+    static_assert(std::is_standard_layout_v<LawState>);
 
     struct PairShape {  // what a pair's radii and masses give
         double r_eff, sqrt_r_eff, m_eff;  // R* (m), √R* (m^½), m* (kg)
@@ -195,12 +207,11 @@ private:
     };
     struct ListedPair {  // a checkpoint's record of one listed pair
         std::uint32_t i, j;
-        typename Law::State state;
+        LawState state;
     };
     struct PairResult {  // what one pair contributes this step
         Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
     };
-    using Lost = std::conditional_t<Ledger, Dissipation, NoDissipation>;
     struct alignas(64) ThreadLedger {  // one thread's share of this step's ledger (own cache line)
         Dissipation lost;
         double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
@@ -230,13 +241,13 @@ private:
     // reaches the rupture gap).
     void rebuild() {
         std::vector<PairIndex> old;
-        std::vector<typename Law::State> old_states;
+        std::vector<LawState> old_states;
         std::vector<std::uint8_t> old_engaged;
         old.swap(pairs_), old_states.swap(states_), old_engaged.swap(engaged_);
         neighbors_.build(p_);
         const auto& near = neighbors_.pairs();
         pairs_.reserve(near.size()), states_.reserve(near.size()), engaged_.reserve(near.size());
-        auto add = [&](PairIndex q, const typename Law::State& state, std::uint8_t engaged) {
+        auto add = [&](PairIndex q, const LawState& state, std::uint8_t engaged) {
             pairs_.push_back(q), states_.push_back(state), engaged_.push_back(engaged);
         };
         auto keep_bridged = [&](std::size_t k) {
@@ -246,7 +257,7 @@ private:
         for (const auto& [i, j] : near) {
             for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k) keep_bridged(k);
             if (k < old.size() && old[k].i == i && old[k].j == j) add(old[k], old_states[k], old_engaged[k]), ++k;
-            else add({i, j}, typename Law::State{}, 0);
+            else add({i, j}, LawState{}, 0);
         }
         for (; k < old.size(); ++k) keep_bridged(k);
         index_incidence();
@@ -323,7 +334,7 @@ private:
     // where it does not act; a central force leaves the torques zero). A pair that stops acting
     // has its springs released.
     template <class L>
-    DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, const PairShape& shape, typename Law::State& s, double reach,
+    DEMSCALE_HOT Acts pair_result(std::size_t i, std::size_t j, const PairShape& shape, LawState& s, double reach,
                                   L& lost, PairResult& out) const {
         const Vec3 d = p_.position[i] - p_.position[j];
         const double dist = d.norm(), gap = dist - p_.radius[i] - p_.radius[j];
@@ -479,8 +490,8 @@ private:
         for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
             // Evaluated again on a copy of the contact's history (the step's own results are not kept).
             const PairIndex q = pairs_[incidence_[e] / 2];
-            typename Law::State copy = states_[incidence_[e] / 2];
-            NoDissipation none;
+            LawState copy = states_[incidence_[e] / 2];
+            Lost none;  // booked into nothing kept
             PairResult r;
             pair_result(q.i, q.j, shapes_[incidence_[e] / 2], copy, law_.range(), none, r);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
@@ -519,14 +530,14 @@ private:
     // be non-zero (0: surely zero). Apart, three arrays: the pair loop reads a pair's history only
     // when it may act.
     std::vector<PairIndex> pairs_;
-    std::vector<typename Law::State> states_;
+    std::vector<LawState> states_;
     std::vector<std::uint8_t> engaged_;
     std::vector<PairShape> shapes_;       // per listed pair
     std::vector<PairShape> wall_shapes_;  // per particle, against any wall
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
     std::vector<ThreadLedger> thread_ledger_;
-    std::vector<std::vector<typename Law::State>> wall_state_;     // per wall, per particle
+    std::vector<std::vector<LawState>> wall_state_;     // per wall, per particle
     std::vector<std::vector<std::uint8_t>> wall_engaged_;         // per wall, per particle: 0 when its state is surely zero
     Dissipation dissipated_;  // so far, J
     double wall_work_ = 0;    // J done by walls on particles so far

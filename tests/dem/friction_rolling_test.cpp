@@ -139,7 +139,7 @@ TEST_CASE("Rolling springs: an elastic step turns the torque by k_r w dt, with A
     const double ai = 2.25 * (4.0 / 3.0 * e_star * a) * 0.1 * 0.1 * r2, iwashita_oda = 8 * g_star * a * r2;
     NoDissipation lost;
     auto turn = [&](auto law) {
-        typename decltype(law)::State state;
+        typename decltype(law)::template StateFor<NoDissipation> state;
         return law.force(c, state, lost).rolling_torque.y() / (c.w_rel.y() * c.dt);
     };
     CHECK(-turn(ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(m)) == Approx(ai).epsilon(1e-12));

@@ -21,6 +21,8 @@ namespace demscale::dem {
 
 struct CohesionNone {
     struct State {};
+    template <class Lost>
+    using StateFor = State;
     double range() const { return 0.0; }
     template <class Lost>
     double pull(double, bool, State&, Lost&) const { return 0.0; }
@@ -32,6 +34,8 @@ struct CohesionMikamiBridge {
     struct State {
         bool bridged = false;
     };
+    template <class Lost>
+    using StateFor = State;
     bridge::MikamiCoefficients k;                   // sphere–sphere
     double radius;                                  // R of the equal spheres, m
     double gamma;                                   // surface tension, N/m

@@ -30,6 +30,8 @@ namespace demscale::dem {
 
 struct RollingNone {
     struct State {};
+    template <class Lost>
+    using StateFor = State;
     explicit RollingNone(const Material&) {}
     template <class Lost>
     Vec3 torque(const ContactPair&, double, double, double, State&, Lost&) const { return Vec3::Zero(); }
@@ -40,6 +42,8 @@ struct RollingNone {
 
 struct RollingConstantTorque {
     struct State {};
+    template <class Lost>
+    using StateFor = State;
     double mu_r;
     explicit RollingConstantTorque(const Material& m) : mu_r(m.rolling_friction) {}
     template <class Lost>
@@ -58,10 +62,12 @@ struct RollingConstantTorque {
 
 template <class Stiffness>
 struct RollingSpring {
-    struct State {
-        Vec3 torque = Vec3::Zero();  // elastic rolling torque carried between steps, N m
-        double stiffness = 0;        // k_r at the last step, N m/rad (for the ledger)
+    template <class Lost>  // Dissipation: with the ledger's k_r of the last step; NoDissipation: without
+    struct StateFor {
+        Vec3 torque = Vec3::Zero();                          // elastic rolling torque carried between steps, N m
+        [[no_unique_address]] LastStiffness<Lost> stiffness; // k_r at the last step, N m/rad
     };
+    using State = StateFor<Dissipation>;
     double mu_r, eta_r;
 
     explicit RollingSpring(const Material& m) : mu_r(m.rolling_friction), eta_r(m.rolling_damping) {}
@@ -72,14 +78,17 @@ struct RollingSpring {
 
     // lost: what this step dissipates is added.
     template <class Lost>
-    DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force, State& s,
-                Lost& lost) const {
+    DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force,
+                             StateFor<Lost>& s, Lost& lost) const {
         const Vec3 w_roll = c.w_rel - c.normal * c.normal.dot(c.w_rel);  // twisting excluded
         const double kr = stiffness(c, normal_stiffness, tangential_stiffness);
         s.torque -= c.normal * c.normal.dot(s.torque);  // keep it in the tangent plane
         const double before = s.torque.squaredNorm();
-        if (s.stiffness > 0 && kr > 0) lost.spring_stiffness += 0.5 * before * (kr - s.stiffness) / (s.stiffness * kr);
-        s.stiffness = kr;
+        if constexpr (books_losses<Lost>) {
+            const double was = s.stiffness.value;
+            if (was > 0 && kr > 0) lost.spring_stiffness += 0.5 * before * (kr - was) / (was * kr);
+            s.stiffness.value = kr;
+        }
         s.torque -= kr * c.dt * w_roll;
         const double limit = mu_r * c.r_eff * std::abs(normal_force);
         if (const double magnitude = beyond_limit(s.torque.squaredNorm(), limit)) {  // full mobilisation: plastic rolling
@@ -95,14 +104,17 @@ struct RollingSpring {
 
     // The surfaces parted: the spring lets go of what it held.
     template <class Lost>
-    void release(State& s, Lost& lost) const {
-        if (s.stiffness == 0) return;  // nothing held
-        lost.spring_stiffness += 0.5 * s.torque.squaredNorm() / s.stiffness;
+    void release(StateFor<Lost>& s, Lost& lost) const {
+        if constexpr (books_losses<Lost>) {
+            if (s.stiffness.value == 0) return;  // nothing held
+            lost.spring_stiffness += 0.5 * s.torque.squaredNorm() / s.stiffness.value;
+        }
         s = {};
     }
 
     // ½ |M|² / k_r, J.
-    double stored_energy(const ContactPair& c, double normal_stiffness, double tangential_stiffness, const State& s) const {
+    template <class Lost>
+    double stored_energy(const ContactPair& c, double normal_stiffness, double tangential_stiffness, const StateFor<Lost>& s) const {
         const double kr = stiffness(c, normal_stiffness, tangential_stiffness);
         return kr > 0 ? 0.5 * s.torque.squaredNorm() / kr : 0.0;
     }

@@ -19,6 +19,8 @@ namespace demscale::dem {
 
 struct TangentialNone {
     struct State {};
+    template <class Lost>
+    using StateFor = State;
     explicit TangentialNone(const Material&) {}
     double stiffness(const ContactPair&) const { return 0.0; }
     template <class Lost>
@@ -32,10 +34,12 @@ struct TangentialNone {
 // parameter. A fresh contact starts at zero; on sliding the spring is reset to the limit.
 template <class Spring>
 struct TangentialHistory {
-    struct State {
-        Vec3 spring = Vec3::Zero();  // accumulated tangential displacement ξ, m
-        double stiffness = 0;        // S_t at the last step, N/m (for the ledger)
+    template <class Lost>  // Dissipation: with the ledger's S_t of the last step; NoDissipation: without
+    struct StateFor {
+        Vec3 spring = Vec3::Zero();                          // accumulated tangential displacement ξ, m
+        [[no_unique_address]] LastStiffness<Lost> stiffness; // S_t at the last step, N/m
     };
+    using State = StateFor<Dissipation>;
     Spring law;
     double mu;
 
@@ -46,7 +50,7 @@ struct TangentialHistory {
     // normal_force: the total normal force (for the Coulomb limit); lost: what this step dissipates is added.
     // Lost: Dissipation, or NoDissipation to book nothing.
     template <class Lost>
-    DEMSCALE_HOT Vec3 force(const ContactPair& c, double normal_force, State& s, Lost& lost) const {
+    DEMSCALE_HOT Vec3 force(const ContactPair& c, double normal_force, StateFor<Lost>& s, Lost& lost) const {
         // Keep the spring in the current tangent plane, at its length (the pair may have rotated).
         const double length2 = s.spring.squaredNorm();
         if (length2 > 0) {  // a fresh contact has none to turn
@@ -57,8 +61,10 @@ struct TangentialHistory {
         }
         const double st = stiffness(c);
         const double stored_before = 0.5 * st * length2;  // the rotation kept the length
-        lost.spring_stiffness += 0.5 * (s.stiffness - st) * length2;
-        s.stiffness = st;
+        if constexpr (books_losses<Lost>) {
+            lost.spring_stiffness += 0.5 * (s.stiffness.value - st) * length2;
+            s.stiffness.value = st;
+        }
         s.spring += c.v_tangential * c.dt;
         const double damping = law.damping(st, c.m_eff);  // ≤ 0
         Vec3 f = -st * s.spring - damping * c.v_tangential;
@@ -75,14 +81,17 @@ struct TangentialHistory {
 
     // The surfaces parted: the spring lets go of what it held.
     template <class Lost>
-    void release(State& s, Lost& lost) const {
-        if (s.stiffness == 0) return;  // nothing held (the common case: a listed pair apart)
-        lost.spring_stiffness += 0.5 * s.stiffness * s.spring.squaredNorm();
+    void release(StateFor<Lost>& s, Lost& lost) const {
+        if constexpr (books_losses<Lost>) {
+            if (s.stiffness.value == 0) return;  // nothing held (the common case: a listed pair apart)
+            lost.spring_stiffness += 0.5 * s.stiffness.value * s.spring.squaredNorm();
+        }
         s = {};
     }
 
     // ½ S_t |ξ|², J.
-    double stored_energy(const ContactPair& c, const State& s) const {
+    template <class Lost>
+    double stored_energy(const ContactPair& c, const StateFor<Lost>& s) const {
         return c.overlap > 0 ? 0.5 * stiffness(c) * s.spring.squaredNorm() : 0.0;
     }
 };
