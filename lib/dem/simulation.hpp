@@ -537,8 +537,8 @@ private:
     std::vector<PairResult> results_;
     std::vector<std::uint32_t> incidence_start_, incidence_;
     std::vector<ThreadLedger> thread_ledger_;
-    std::vector<std::vector<LawState>> wall_state_;     // per wall, per particle
-    std::vector<std::vector<std::uint8_t>> wall_engaged_;         // per wall, per particle: 0 when its state is surely zero
+    std::vector<std::vector<LawState>> wall_state_;        // per wall, per particle
+    std::vector<std::vector<std::uint8_t>> wall_engaged_;  // per wall, per particle: 0 when its state is surely zero
     Dissipation dissipated_;  // so far, J
     double wall_work_ = 0;    // J done by walls on particles so far
     double time_ = 0;

@@ -39,12 +39,16 @@ struct FrustumWall {
     // Where the point (ρ, z) (m, relative to the base centre, ρ from the axis) projects on the
     // meridian segment (r_b, 0) → (r_t, H): 0 at the bottom edge, 1 at the top.
     double meridian_fraction(double rho, double z) const {
-        const double dr = top_radius - bottom_radius;
-        return std::clamp(meridian_projection(rho, z) / (dr * dr + height * height), 0.0, 1.0);
+        return std::clamp(meridian_projection(rho, z) / meridian_length2(), 0.0, 1.0);
     }
     // (ρ − r_b, z) · (r_t − r_b, H), m²: the fraction above times the meridian's squared length.
     double meridian_projection(double rho, double z) const {
         return (rho - bottom_radius) * (top_radius - bottom_radius) + z * height;
+    }
+    // (r_t − r_b)² + H², m².
+    double meridian_length2() const {
+        const double dr = top_radius - bottom_radius;
+        return dr * dr + height * height;
     }
 };
 
@@ -72,8 +76,7 @@ public:
         }
         frustum_ = std::get<FrustumWall>(wall);
         origin_ = frustum_.base_centre + frustum_.offset(t);
-        const double dr = frustum_.top_radius - frustum_.bottom_radius;
-        inverse_length2_ = 1.0 / (dr * dr + frustum_.height * frustum_.height);
+        inverse_length2_ = 1.0 / frustum_.meridian_length2();
     }
 
     // distance: m, > 0.
