@@ -15,7 +15,7 @@ struct Options {
     std::string out_dir = source_dir + "/report";
     std::string cache = default_cache;
     bool quick = false, no_cache = false;
-    int jobs = 0, threads = 0, replicas = 1;
+    int jobs = 0, threads = 0, seeds = 0;  // seeds 0: 8, or 3 with --quick
 };
 
 // The source tree's revision, with "+changes" when the working tree differs from it.
@@ -45,7 +45,8 @@ int run_report(const Options& o) {
     if (!o.no_cache) r.cache_dir = o.cache;
     const auto par = parallelism(o.jobs, o.threads);
     r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
-    r.replicas = o.replicas;
+    if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
+    r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
     r.git_revision = git_revision();
     const auto out = report::write_similarity_report(r, [](const std::string& s) { std::cerr << "report: " << s << "\n"; });
     std::cout << "wrote " << out.html.string() << "\nwrote " << out.markdown.string() << " (figures in "
@@ -67,7 +68,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_flag("--quick", o->quick, "small scene, coarse grids: the whole report in under a minute");
     c->add_option("--cache", o->cache, "folder of finished slump runs, reused by scene key (default: cache/)");
     c->add_flag("--no-cache", o->no_cache, "run every slump; read and write no cache");
-    c->add_option("--replicas", o->replicas, "fine runs with other seeds, for the fine-vs-fine noise floor")->capture_default_str();
+    c->add_option("--seeds", o->seeds, "runs per ensemble, fine and each (S_f, k) (default 8; --quick: 3)");
     c->add_option("--jobs", o->jobs, "slump runs side by side (default: one per core)");
     c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
     return {{c, [o] { return run_report(*o); }}};

@@ -92,14 +92,29 @@ int run_slump_command(const Options& o) {
     j["critical_dt_s"] = r.critical_dt;
     j["wall_s"] = r.wall_s;
     j["particle_steps_per_s"] = double(r.particles) * double(r.steps) / r.wall_s;
+    j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
+    j["pour_time_s"] = r.pour_time;
+    j["fill_solid_fraction"] = r.fill.solid_fraction;
+    j["fill_core_fraction"] = r.fill.core_points > 0 ? nlohmann::ordered_json(r.fill.core_fraction) : nlohmann::ordered_json();
+    j["fill_coordination"] = r.fill.coordination;
+    j["fill_max_overlap_r"] = r.fill.max_overlap;
     j["settled"] = r.settled;
     j["came_to_rest"] = r.came_to_rest;
+    j["time_to_rest_s"] = r.came_to_rest ? nlohmann::ordered_json(r.time_to_rest()) : nlohmann::ordered_json();
+    j["end_speed_p50_m_per_s"] = r.motion.speed_p50;
+    j["end_speed_p99_m_per_s"] = r.motion.speed_p99;
+    j["end_speed_max_m_per_s"] = r.motion.speed_max;
+    j["end_spin_p99_m_per_s"] = r.motion.spin_p99;
+    j["end_moving"] = r.motion.moving;
+    j["end_moving_at_edge"] = r.motion.moving_at_edge;
     j["initial_height_mm"] = r.initial_height * 1e3;
     j["final_height_mm"] = r.final.height * 1e3;
     j["slump_mm"] = r.slump() * 1e3;
+    j["slump_over_fill_height"] = r.slump() / r.initial_height;
+    j["slump_fine_radii"] = r.slump() / fine.radius_m;
     j["spread_d95_mm"] = r.final.spread_d95 * 1e3;
     j["spread_max_mm"] = r.final.spread_max * 1e3;
-    j["repose_angle_deg"] = r.final.repose_angle_deg;
+    j["repose_angle_deg"] = r.final.repose_angle_deg ? nlohmann::ordered_json(*r.final.repose_angle_deg) : nlohmann::ordered_json();
     j["end_time_s"] = r.end;
     if (r.energy_ledger && !r.history.empty()) {  // the energy ledger at the end (J) and how well it balanced
         const auto& e = r.history.back().energy;
@@ -149,7 +164,7 @@ int run_pile(const Options& o) {
     j["final_height_mm"] = m.height * 1e3;
     j["spread_d95_mm"] = m.spread_d95 * 1e3;
     j["spread_max_mm"] = m.spread_max * 1e3;
-    j["repose_angle_deg"] = m.repose_angle_deg;
+    j["repose_angle_deg"] = m.repose_angle_deg ? nlohmann::ordered_json(*m.repose_angle_deg) : nlohmann::ordered_json();
     std::cout << j.dump(2) << "\n";
     return 0;
 }

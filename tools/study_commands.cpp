@@ -11,6 +11,7 @@
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
 #include "report/similarity_table.hpp"
+#include "stats/verdict.hpp"
 
 namespace demscale::cli {
 
@@ -23,7 +24,7 @@ struct Options {
     std::vector<std::string> scaled;
     std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
     int jobs = 0, threads = 0;                                 // 0: from the machine
-    int replicas = 1;
+    int seeds = 8;
     std::string cache = default_cache;
     bool no_cache = false, no_png = false, force_dt = false;
     std::string out_dir = default_plots;
@@ -50,7 +51,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     plan.jobs = par.jobs, plan.threads_per_job = par.threads_per_job;
     if (!o.no_cache) plan.cache_dir = o.cache;
     plan.force_dt = o.force_dt;
-    plan.replicas = o.replicas;
+    plan.seeds = o.seeds;
     return plan;
 }
 
@@ -58,21 +59,38 @@ slump::Study run(const slump::StudyPlan& plan) {
     return slump::run_study(plan, [](const std::string& line) { std::cerr << "study: " << line << "\n"; });
 }
 
-// Prints the tables (text, markdown, csv or json) and the files written; returns the exit code.
+// Prints the tables (text, markdown, csv or json) and the files written; returns the exit code:
+// with gate, 0 PASS, 1 FAIL, 4 INCONCLUSIVE (the verdict of every ensemble together).
 int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& study, const std::string& stem, bool gate) {
     const auto format = io::parse_format(o.format, "--format");
     const std::string label = display_path(o.scene);
-    std::vector<io::Table> tables = {report::similarity_groups_table(plan.exponents), report::study_table(study, label)};
+    std::vector<io::Table> tables = {report::verdict_table(study, label), report::ensemble_table(study, label),
+                                     report::similarity_groups_table(plan.exponents)};
     if (plan.exponents.size() > 1) tables.push_back(report::best_exponent_table(study, plan.scale_factors));
     const auto files = report::write_study_files(study, label, o.out_dir, stem, !o.no_png);
-    std::cout << join_tables(tables, format);
-    const bool pass = study.all_within();
-    if (format != io::Format::json && gate)
-        std::cout << "\nverdict: " << (pass ? "PASS" : "FAIL") << " — "
-                  << std::count_if(study.runs.begin(), study.runs.end(), [](const auto& r) { return r.within_tolerance; }) << " of "
-                  << study.runs.size() << " coarse runs within tolerance\n";
+    const auto overall = study.overall();
+    if (format == io::Format::json) {
+        // One object: the overall verdict, then the tables (arrays of rows keyed by column).
+        auto j = nlohmann::ordered_json::parse(join_tables(tables, format));
+        nlohmann::ordered_json out;
+        out["verdict"] = stats::verdict_name(overall);
+        out["tables"] = j;
+        std::cout << out.dump(2) << "\n";
+    } else {
+        std::cout << join_tables(tables, format);
+    }
+    if (format != io::Format::json && gate) {
+        std::size_t n[3] = {0, 0, 0};
+        for (const auto& v : study.verdicts) ++n[static_cast<int>(v.overall)];
+        std::cout << "\nverdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
+                  << " INCONCLUSIVE of " << study.verdicts.size() << " (S_f, k) ensembles of " << plan.seeds << " seeds\n";
+        if (overall == stats::Verdict::inconclusive)
+            std::cout << "INCONCLUSIVE: the 95 % intervals straddle a tolerance; the smallest tolerances these data confirm are in the "
+                         "verdict table (more --seeds narrow the intervals)\n";
+    }
     for (const auto& f : files.written) std::cerr << "wrote " << f.string() << "\n";
-    return gate && !pass ? 1 : 0;
+    if (!gate) return 0;
+    return overall == stats::Verdict::pass ? 0 : overall == stats::Verdict::fail ? 1 : 4;
 }
 
 void add_common(CLI::App* c, Options& o) {
@@ -80,10 +98,10 @@ void add_common(CLI::App* c, Options& o) {
     c->add_option("--sf", o.sfs, "scale factors S_f of the coarse runs")->capture_default_str();
     c->add_option("--scale", o.scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity")
         ->delimiter(',');
-    c->add_option("--tol-slump", o.tol_slump, "relative slump tolerance (default: the scene's [check])");
+    c->add_option("--tol-slump", o.tol_slump, "slump tolerance, a fraction of the fill height (default: the scene's [check])");
     c->add_option("--tol-spread", o.tol_spread, "relative spread-d95 tolerance (default: the scene's [check])");
-    c->add_option("--tol-profile", o.tol_profile, "relative L2 profile tolerance (default: the scene's [check])");
-    c->add_option("--replicas", o.replicas, "fine runs with other seeds, for the fine-vs-fine noise floor")->capture_default_str();
+    c->add_option("--tol-profile", o.tol_profile, "profile tolerance, relative L2 shape distance (default: the scene's [check])");
+    c->add_option("--seeds", o.seeds, "runs per ensemble: the fine one and each (S_f, k)")->capture_default_str();
     c->add_option("--jobs", o.jobs, "runs side by side (default: one per core)");
     c->add_option("--threads", o.threads, "OpenMP threads per run (default: cores / jobs)");
     c->add_option("--cache", o.cache, "folder of finished runs, reused by scene key (default: cache/)");
@@ -99,7 +117,7 @@ void add_common(CLI::App* c, Options& o) {
 std::vector<Command> study_commands(CLI::App& app) {
     auto check = std::make_shared<Options>();
     auto* c = app.add_subcommand("check-exponent",
-                                 "slump test of the coarse runs (gamma S_f^k) against the fine reference; exit 1 if any is out of tolerance");
+                                 "slump test of coarse ensembles (gamma S_f^k) against the fine ensemble; exit 0 PASS, 1 FAIL, 4 INCONCLUSIVE");
     c->add_option("--exponent", check->exponents, "the candidate k")->required();
     add_common(c, *check);
 

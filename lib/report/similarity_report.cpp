@@ -23,6 +23,7 @@
 #include "report/slump_study_tables.hpp"
 #include "slump/slump_files.hpp"
 #include "slump/study.hpp"
+#include "stats/verdict.hpp"
 
 namespace demscale::report {
 
@@ -97,30 +98,28 @@ io::Table bridge_at_scene(double vhat, ContactAngle theta) {
 
 std::string verdict_text(const slump::Study& study, const std::vector<double>& sfs) {
     std::string v;
-    if (!study.replicas.empty()) {
-        const auto n = study.noise_floor();
-        v += "The same fine scene filled with another seed differs from the reference by up to " + pct(n.profile_error) +
-             " in profile, " + pct(n.slump_error) + " in slump and " + pct(n.spread_error) +
-             " in spread: errors of that size are noise, not a failure of the scaling. ";
-    }
+    const auto& n = study.noise;
+    v += "The fine ensemble (" + std::to_string(study.noise.slump_over_height.n) + " seeds) scatters by " +
+         pct(n.slump_over_height.sd) + " of the fill height in slump (sd), " +
+         pct(n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300)) + " in spread and " + pct(n.profile.mean) +
+         " in profile (each run from the mean shape): differences of that size between single runs are noise. ";
     for (double sf : sfs) {
         const auto& b = study.best_at(sf);
-        v += "At S_f = " + format_short(sf) + " the exponent k = " + format_short(b.grain.exponent) +
-             " fits the fine pile best (profile error " + pct(b.versus_reference.profile_error) + ", slump error " +
-             pct(b.versus_reference.slump_error) + ", spread error " + pct(b.versus_reference.spread_error) + ", " +
-             format_short(b.versus_reference.work_speedup, 3) + "x fewer particle-steps); " +
-             (b.within_tolerance ? "within" : "outside") + " the tolerances. ";
+        v += "At S_f = " + format_short(sf) + " the exponent k = " + format_short(b.exponent) +
+             " comes closest to the fine ensemble (profile distance " + pct(b.criteria[2].estimate) + ", slump difference " +
+             pct(b.criteria[0].estimate) + " of the height, spread difference " + pct(b.criteria[1].estimate) + "): " +
+             stats::verdict_name(b.overall) + ". ";
     }
-    auto profile_error = [&](double sf, double k) -> std::optional<double> {
-        for (const auto& r : study.runs)
-            if (r.grain.sf == sf && r.grain.exponent == k) return r.versus_reference.profile_error;
+    auto distance = [&](double sf, double k) -> std::optional<double> {
+        for (const auto& e : study.verdicts)
+            if (e.sf == sf && e.exponent == k) return e.criteria[2].estimate;
         return std::nullopt;
     };
     int compared = 0, k1_better = 0;
     for (double sf : sfs)
-        if (const auto e1 = profile_error(sf, 1.0), e3 = profile_error(sf, 3.0); e1 && e3) ++compared, k1_better += *e1 < *e3;
+        if (const auto e1 = distance(sf, 1.0), e3 = distance(sf, 3.0); e1 && e3) ++compared, k1_better += *e1 < *e3;
     if (compared > 0)
-        v += "Yun & Park (2017) prefer k = 1 over k = 3 (Fig. 5, judged by eye); here k = 1 has the smaller profile error at " +
+        v += "Yun & Park (2017) prefer k = 1 over k = 3 (Fig. 5, judged by eye); here the k = 1 ensembles are closer in profile at " +
              std::to_string(k1_better) + " of " + std::to_string(compared) + " scale factors.";
     return v;
 }
@@ -151,7 +150,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.tolerances = scene.tolerances;
     plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
     plan.cache_dir = o.cache_dir;
-    plan.replicas = o.replicas;
+    plan.seeds = o.seeds;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
 
     Document doc;
@@ -220,6 +219,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     });
 
     Section slump_section{"Slump test", {}};
+    Section verdict_section{"Verdict", {}};
     timed("slump study", [&] {
         const auto study = slump::run_study(plan, [&](const std::string& s) { say("slump: " + s); });
         slump_section.blocks.push_back(Paragraph{
@@ -232,29 +232,39 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             slump::write_slump_files(r.result, title, figures, stem, true);
             slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title, true});
         };
-        side(study.reference, "slump_reference", "fine reference (S_f = 1)");
-        for (const auto& r : study.replicas)
-            side(r, "slump_seed" + std::to_string(r.scene.seed), "fine, seed " + std::to_string(r.scene.seed));
+        side(study.reference, "slump_reference", "fine reference (S_f = 1), seed " + std::to_string(study.reference.scene.seed));
         for (const auto& r : study.runs)
             side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
-                 "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent));
+                 "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent) + ", seed " + std::to_string(r.scene.seed));
         const auto files = write_study_files(study, o.scene_label, figures, "study", true);
-        slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
-        slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine reference"});
-        if (!files.error_png.empty())
-            slump_section.blocks.push_back(FigureBlock{files.error_png, "Profile and slump errors against the exponent k, per S_f"});
-        slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile error against the particle-step speed-up"});
+        slump_section.blocks.push_back(TableBlock{ensemble_table(study, o.scene_label)});
+        slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
+        slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
+        slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
         slump_section.blocks.push_back(TableBlock{best_exponent_table(study, o.scale_factors)});
-        slump_section.blocks.push_back(Paragraph{"Verdict. " + verdict_text(study, o.scale_factors)});
-        std::vector<const slump::StudyRun*> all = {&study.reference};
-        for (const auto& r : study.replicas) all.push_back(&r);
-        for (const auto& r : study.runs) all.push_back(&r);
-        for (const auto* r : all) {
-            const std::string who = r->grain.sf == 1 ? "fine, seed " + std::to_string(r->scene.seed)
-                                                     : "S_f = " + format_short(r->grain.sf) + ", k = " + format_short(r->grain.exponent);
-            if (!r->result.came_to_rest) caveats.push_back("slump " + who + ": not at rest when the spread time limit ended");
-            for (const auto& w : r->warnings) caveats.push_back("slump " + who + ": geometry limits similarity: " + w);
-            if (r->grain.sf != 1 && !r->within_tolerance) caveats.push_back("slump " + who + ": outside the tolerances");
+        slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, o.scale_factors)});
+        slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
+        verdict_section.blocks.push_back(Paragraph{
+            "Overall: " + stats::verdict_name(study.overall()) + ". Each coarse ensemble (S_f, k) is compared with the fine ensemble, " +
+            std::to_string(plan.seeds) + " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies "
+            "inside the tolerance, FAIL where it lies wholly outside, INCONCLUSIVE otherwise."});
+        verdict_section.blocks.push_back(TableBlock{verdict_table(study, o.scene_label)});
+        // Caveats per ensemble, not per run: how many runs did not come to rest, which geometry limits apply.
+        auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {
+            std::size_t moving = 0;
+            for (const auto* r : runs) moving += !r->result.came_to_rest;
+            if (moving > 0) caveats.push_back("slump " + who + ": " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
+                                              " runs not at rest when the spread time limit ended");
+            for (const auto& w : runs.front()->warnings) caveats.push_back("slump " + who + ": geometry limits similarity: " + w);
+        };
+        std::vector<const slump::StudyRun*> fine = {&study.reference};
+        for (const auto& r : study.replicas) fine.push_back(&r);
+        ensemble_caveats("fine", fine);
+        const std::size_t others = study.runs.empty() ? 0 : study.coarse_seeds.size() / study.runs.size();
+        for (std::size_t i = 0; i < study.runs.size(); ++i) {
+            std::vector<const slump::StudyRun*> runs = {&study.runs[i]};
+            for (std::size_t j = 0; j < others; ++j) runs.push_back(&study.coarse_seeds[i * others + j]);
+            ensemble_caveats("S_f = " + format_short(study.runs[i].grain.sf) + ", k = " + format_short(study.runs[i].grain.exponent), runs);
         }
     });
 
@@ -274,7 +284,8 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
                                             for (double x : ks) s += (s.empty() ? "" : ", ") + format_short(x);
                                             return s;
                                         }(),
-                                        "tolerances: slump " + pct(plan.tolerances.slump) + ", spread " + pct(plan.tolerances.spread) +
+                                        "seeds per ensemble: " + std::to_string(plan.seeds),
+                                        "tolerances: slump " + pct(plan.tolerances.slump) + " of the fill height, spread " + pct(plan.tolerances.spread) +
                                             ", profile " + pct(plan.tolerances.profile)}});
     inputs.blocks.push_back(TableBlock{scene_parameters(scene, o.scene_label)});
     io::Table time_table;
@@ -286,7 +297,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     Section caveat_section{"Caveats", {}};
     if (caveats.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
     else caveat_section.blocks.push_back(BulletList{caveats});
-    doc.sections = {inputs, similarity, curves, bridges, slump_section, caveat_section};
+    doc.sections = {verdict_section, inputs, similarity, curves, bridges, slump_section, caveat_section};
 
     ReportOutcome out;
     out.html = o.out_dir / "report.html";

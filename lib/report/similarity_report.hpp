@@ -23,7 +23,7 @@ struct ReportOptions {
     std::filesystem::path out_dir;
     std::optional<std::filesystem::path> cache_dir;
     int jobs = 1, threads_per_job = 1;
-    int replicas = 1;                       // fine runs with other seeds (noise floor)
+    int seeds = 8;                          // runs per ensemble, fine and coarse
     std::string git_revision;               // shown in the inputs
 };
 

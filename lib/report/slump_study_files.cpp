@@ -8,6 +8,7 @@
 #include "io/atomic_file.hpp"
 #include "io/gnuplot.hpp"
 #include "report/slump_study_tables.hpp"
+#include "stats/verdict.hpp"
 
 namespace demscale::report {
 
@@ -67,49 +68,97 @@ std::string profiles_script(const std::string& stem, const slump::Study& study, 
     return s.str();
 }
 
-std::string error_script(const std::string& stem, const std::vector<double>& sfs, const std::string& label) {
-    const std::string csv = stem + ".csv";
+// One gnuplot `using` spec selecting the rows of one S_f in the verdicts CSV.
+std::string at_sf(double sf, const std::string& x, const std::string& rest) {
+    return "(abs(column(\"sf\") - " + format_number(sf) + ") < 1e-9 ? column(\"" + x + "\") : NaN):" + rest;
+}
+
+// Each ensemble's estimate with its 95 % interval against k, per S_f; tolerance lines and the fine
+// ensemble's noise band (±1 sd around zero) for the slump and spread panels.
+std::string error_script(const std::string& stem, const std::vector<double>& sfs, const std::string& label, const slump::Study& study) {
+    const std::string csv = stem + "_verdicts.csv";
+    const auto& n = study.noise;
+    const auto& tol = study.tolerances;
     std::ostringstream s;
-    s << header(csv, "errors of the coarse runs against the exponent k", stem + "_error_vs_k.png", "1120,460")
-      << "set multiplot layout 1,2 title \"Coarse runs against the fine reference, " << label << "\" font ',13'\n"
-      << "set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'\n";
-    const std::pair<const char*, const char*> panels[] = {{"profile_error_pct", "profile error ‖h̄ − h‖/‖h‖ (%)"},
-                                                          {"slump_error_pct", "slump error (s̄ − s)/s (%)"}};
-    for (const auto& [col, ylabel] : panels) {
-        s << "set ylabel '" << ylabel << "'\nplot \\\n";
+    s << header(csv, "ensemble differences against the exponent k, with 95 % intervals", stem + "_error_vs_k.png", "1500,480")
+      << "set multiplot layout 1,3 title \"Coarse ensembles against the fine ensemble, " << label
+      << "\\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd)}\" font ',13'\n"
+      << "set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'\nset offsets graph 0.05, graph 0.05, 0, 0\n";
+    struct Panel {
+        const char* col;
+        const char* ylabel;
+        double tol, noise;
+        bool signed_;
+    };
+    const Panel panels[] = {
+        {"slump", "slump difference (% of fill height)", 100 * tol.slump, 100 * n.slump_over_height.sd, true},
+        {"spread", "spread d95 difference (%)", 100 * tol.spread, 100 * n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300), true},
+        {"profile", "profile distance (%)", 100 * tol.profile, 100 * n.profile.mean, false}};
+    for (const auto& p : panels) {
+        const std::string c = p.col;
+        s << "set ylabel '" << p.ylabel << "'\nplot \\\n"
+          << "  " << (p.signed_ ? "-" : "0*") << format_number(p.noise) << " with filledcurves y1=" << format_number(p.noise)
+          << " fc rgb '#e6e6e6' title 'fine noise', \\\n"
+          << "  " << format_number(p.tol) << " with lines lc rgb '#aa0000' dt 2 title 'tolerance'"
+          << (p.signed_ ? ", \\\n  -" + format_number(p.tol) + " with lines lc rgb '#aa0000' dt 2 notitle" : "");
         int i = 0;
         for (double sf : sfs) {
-            s << (i ? ", \\\n" : "") << "  '" << csv << "' using (abs(column(\"sf\") - " << format_number(sf)
-              << ") < 1e-9 ? column(\"exponent\") : NaN):\"" << col << "\" with linespoints lw 2 lc " << i + 1 << " pt "
-              << i + 5 << " title 'S_f = " << format_short(sf) << "'";
+            s << ", \\\n  '" << csv << "' using " << at_sf(sf, "exponent", "\"" + c + "_pct\":\"" + c + "_low_pct\":\"" + c + "_high_pct\"")
+              << " with yerrorlines lw 2 lc " << i + 1 << " pt " << i + 5 << " title 'S_f = " << format_short(sf) << "'";
             ++i;
         }
-        s << (std::string(col) == "slump_error_pct" ? ", 0 with lines lc rgb '#888888' dt 2 notitle\n" : "\n");
+        s << "\n";
     }
     s << "unset multiplot\n";
     return s.str();
 }
 
-std::string front_script(const std::string& stem, const std::vector<double>& sfs, const std::string& label, double lo, double hi) {
-    const std::string csv = stem + ".csv";
+std::string front_script(const std::string& stem, const std::vector<double>& sfs, const std::string& label, double lo, double hi,
+                         double tolerance) {
+    const std::string csv = stem + "_verdicts.csv";
     std::ostringstream s;
-    s << header(csv, "speed against error: one point per (S_f, k)", stem + "_front.png", "900,600")
-      << "set title \"Speed against error, " << label << "\\n{/*0.85 labels: exponent k}\" font ',13'\n"
-      << "set xlabel 'speed-up (fine particle-steps / coarse particle-steps)'\nset ylabel 'profile error (%)'\n"
+    s << header(csv, "speed against error: one point per (S_f, k) ensemble, with the profile distance's 95 % interval",
+                stem + "_front.png", "900,600")
+      << "set title \"Speed against error, " << label << "\\n{/*0.85 labels: exponent k; bars: 95 % intervals; dashed: tolerance}\" font ',13'\n"
+      << "set xlabel 'speed-up (fine particle-steps / coarse particle-steps)'\nset ylabel 'profile distance (%)'\n"
       << (hi > 5 * lo ? "set logscale x\nset xrange [" + format_number(lo / 1.5) + ":" + format_number(hi * 1.5) + "]\n"
                      : "set xrange [0:" + format_number(hi * 1.3) + "]\n")
-      << "set yrange [0:*]\nset offsets graph 0.05, graph 0.1, graph 0.1, graph 0.05\nplot \\\n";
+      << "set yrange [0:*]\nset offsets graph 0.05, graph 0.1, graph 0.1, graph 0.05\nplot \\\n"
+      << "  " << format_number(100 * tolerance) << " with lines lc rgb '#aa0000' dt 2 title 'tolerance'";
     int i = 0;
     for (double sf : sfs) {
-        const std::string x = "(abs(column(\"sf\") - " + format_number(sf) + ") < 1e-9 ? column(\"speedup_work\") : NaN)";
-        s << (i ? ", \\\n" : "") << "  '" << csv << "' using " << x << ":\"profile_error_pct\" with points pt 7 ps 1.5 lc " << i + 1
-          << " title 'S_f = " << format_short(sf) << "', \\\n  '" << csv << "' using " << x
-          << ":\"profile_error_pct\":(sprintf('%g', column(\"exponent\"))) with labels offset 1.2,0.6 left tc lt " << i + 1
-          << " notitle";
+        s << ", \\\n  '" << csv << "' using " << at_sf(sf, "speedup_work", "\"profile_pct\":\"profile_low_pct\":\"profile_high_pct\"")
+          << " with yerrorbars pt 7 ps 1.5 lc " << i + 1 << " title 'S_f = " << format_short(sf) << "', \\\n  '" << csv
+          << "' using " << at_sf(sf, "speedup_work", "\"profile_pct\":(sprintf('%g', column(\"exponent\")))")
+          << " with labels offset 1.2,0.6 left tc lt " << i + 1 << " notitle";
         ++i;
     }
     s << "\n";
     return s.str();
+}
+
+// The verdicts as numbers, for the figures: estimates and interval ends in %.
+io::Table verdict_numbers(const slump::Study& study, const std::string& scene_label) {
+    io::Table t;
+    t.title = "Coarse ensembles against the fine ensemble (" + scene_label + "), in %";
+    t.columns = {"sf", "exponent", "seeds", "slump_pct", "slump_low_pct", "slump_high_pct", "spread_pct", "spread_low_pct",
+                 "spread_high_pct", "profile_pct", "profile_low_pct", "profile_high_pct", "speedup_work", "verdict"};
+    for (std::size_t i = 0; i < study.verdicts.size(); ++i) {
+        const auto& v = study.verdicts[i];
+        std::vector<io::Cell> row = {v.sf, v.exponent, static_cast<double>(v.coarse_seeds)};
+        for (const auto& c : v.criteria) row.push_back(100 * c.estimate), row.push_back(100 * c.interval.low), row.push_back(100 * c.interval.high);
+        double particles = 0, steps = 0;
+        const auto runs = study.coarse_ensemble(i);
+        for (const auto* r : runs) particles += double(r->particles) / double(runs.size()), steps += double(r->steps) / double(runs.size());
+        row.push_back(study.fine.particle_steps / (particles * steps));
+        row.push_back(stats::verdict_name(v.overall));
+        t.rows.push_back(std::move(row));
+    }
+    // By S_f, then k, so that each S_f's line in the error plot is unbroken.
+    std::stable_sort(t.rows.begin(), t.rows.end(), [](const auto& a, const auto& b) {
+        return std::tie(std::get<double>(a[0]), std::get<double>(a[1])) < std::tie(std::get<double>(b[0]), std::get<double>(b[1]));
+    });
+    return t;
 }
 
 }  // namespace
@@ -122,14 +171,9 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
         io::write_file_atomically(out_dir / name, text);
         f.written.push_back(out_dir / name);
     };
-    // The CSV the figures read has a numeric exponent column: the fine rows (reference, seeds) are
-    // left out of it. Rows by S_f, then k, so that each S_f's line in the error plot is unbroken.
-    io::Table runs = study_table(study, scene_label);
-    std::erase_if(runs.rows, [](const auto& row) { return !std::holds_alternative<double>(row[1]); });
-    std::stable_sort(runs.rows.begin(), runs.rows.end(), [](const auto& a, const auto& b) {
-        return std::tie(std::get<double>(a[0]), std::get<double>(a[1])) < std::tie(std::get<double>(b[0]), std::get<double>(b[1]));
-    });
-    write(stem + ".csv", io::render(runs, io::Format::csv));
+    write(stem + ".csv", io::render(study_table(study, scene_label), io::Format::csv));
+    const auto numbers = verdict_numbers(study, scene_label);
+    write(stem + "_verdicts.csv", io::render(numbers, io::Format::csv));
 
     io::Table profiles;
     profiles.title = "Final radial height profiles (" + scene_label + "); run: seedN for fine runs, sfS_kK for coarse ones";
@@ -153,11 +197,10 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
         f.written.push_back(png);
     };
     figure(stem + "_profiles", profiles_script(stem, study, ks, sfs, label), f.profiles_png);
-    if (ks.size() > 1) figure(stem + "_error_vs_k", error_script(stem, sfs, label), f.error_png);
-        double lo = 1e300, hi = 0;
-    for (const auto& r : study.runs)
-        lo = std::min(lo, r.versus_reference.work_speedup), hi = std::max(hi, r.versus_reference.work_speedup);
-    figure(stem + "_front", front_script(stem, sfs, label, std::max(lo, 1e-3), std::max(hi, 1e-3)), f.front_png);
+    figure(stem + "_error_vs_k", error_script(stem, sfs, label, study), f.error_png);
+    double lo = 1e300, hi = 0;
+    for (const auto& row : numbers.rows) lo = std::min(lo, std::get<double>(row[12])), hi = std::max(hi, std::get<double>(row[12]));
+    figure(stem + "_front", front_script(stem, sfs, label, std::max(lo, 1e-3), std::max(hi, 1e-3), study.tolerances.profile), f.front_png);
     return f;
 }
 

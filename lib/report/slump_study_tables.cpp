@@ -3,12 +3,11 @@
 #include <cmath>
 
 #include "core/input_error.hpp"
+#include "stats/summary.hpp"
 
 namespace demscale::report {
 
 namespace {
-
-std::string verdict(const slump::StudyRun& r) { return r.within_tolerance ? "pass" : "FAIL"; }
 
 std::string remarks(const slump::StudyRun& r) {
     std::string t;
@@ -18,66 +17,131 @@ std::string remarks(const slump::StudyRun& r) {
     return t;
 }
 
-// label: what stands in the exponent column for fine runs ("reference", "seed 2"); empty for coarse runs.
-std::vector<io::Cell> row(const slump::StudyRun& r, const std::string& label) {
-    const bool reference = label == "reference";
-    const auto& x = r.result;
-    const auto& c = r.versus_reference;
-    return {r.grain.sf,
-            label.empty() ? io::Cell(r.grain.exponent) : io::Cell(label),
-            static_cast<double>(x.particles),
-            static_cast<double>(x.steps),
-            x.dt * 1e6,
-            x.wall_s,
-            reference ? 1.0 : c.wall_speedup,
-            reference ? 1.0 : c.work_speedup,
-            x.slump() * 1e3,
-            100 * c.slump_error,
-            x.final.spread_d95 * 1e3,
-            100 * c.spread_error,
-            100 * c.profile_error,
-            x.final.repose_angle_deg,
-            label.empty() ? verdict(r) : std::string("-"),
-            remarks(r)};
+std::string tolerances_text(const slump::Tolerances& t) {
+    return "slump " + format_short(100 * t.slump) + " % of the fill height, spread d95 " + format_short(100 * t.spread) +
+           " %, profile " + format_short(100 * t.profile) + " %";
+}
+
+// "+1.2 [−0.4, +2.8]" in %.
+std::string interval_pct(double estimate, const stats::Interval& i) {
+    auto s = [](double x) { return (x >= 0 ? "+" : "") + format_short(100 * x, 3); };
+    return s(estimate) + " [" + s(i.low) + ", " + s(i.high) + "]";
+}
+
+io::Cell mean_or_na(const std::vector<double>& v) {
+    if (v.empty()) return io::Cell("n/a");
+    return stats::summarize(v).mean;
 }
 
 }  // namespace
 
+io::Table verdict_table(const slump::Study& study, const std::string& scene_label) {
+    io::Table t;
+    t.title = "Verdict per scale factor and exponent: coarse ensemble against the fine ensemble (" + scene_label + ")";
+    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)},
+                  {"overall", stats::verdict_name(study.overall())}};
+    t.columns = {"sf", "exponent", "seeds", "slump_diff_pct_of_height", "spread_diff_pct", "profile_distance_pct", "verdict",
+                 "smallest_tolerances_pct", "notes"};
+    for (const auto& v : study.verdicts) {
+        std::string smallest, notes;
+        std::vector<io::Cell> row = {v.sf, v.exponent, static_cast<double>(v.coarse_seeds)};
+        for (const auto& c : v.criteria) {
+            row.push_back(interval_pct(c.estimate, c.interval) + " " + stats::verdict_name(c.verdict));
+            smallest += (smallest.empty() ? "" : " / ") + format_short(100 * c.smallest_tolerance, 3);
+            if (!c.reason.empty()) notes += c.measure + ": " + c.reason + "; ";
+        }
+        for (const auto& w : v.warnings) notes += w + "; ";
+        if (!notes.empty()) notes.resize(notes.size() - 2);
+        row.push_back(stats::verdict_name(v.overall));
+        row.push_back(smallest);
+        row.push_back(notes);
+        t.rows.push_back(std::move(row));
+    }
+    t.notes.push_back("each cell: estimate [95 % interval], in %; slump as (coarse - fine) mean slump over the fill height, Welch t; "
+                      "spread as the difference of mean d95 over the fine mean, Welch t; profile as the distance between the mean "
+                      "shapes, bootstrap over seeds");
+    t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
+    t.notes.push_back("smallest_tolerances_pct: slump / spread / profile tolerances these data could confirm");
+    return t;
+}
+
+io::Table ensemble_table(const slump::Study& study, const std::string& scene_label) {
+    io::Table t;
+    t.title = "Ensembles: means over the seeds (" + scene_label + ")";
+    t.columns = {"sf", "exponent", "seeds", "particles", "steps", "wall_s", "speedup_work", "speedup_wall", "slump_over_height",
+                 "slump_over_height_sd", "slump_mm", "slump_fine_radii", "spread_d95_mm", "spread_d95_sd_mm", "profile_distance_pct",
+                 "at_rest", "time_to_rest_s", "fill_solid_fraction", "fill_coordination", "repose_deg"};
+    const double r_fine = study.reference.scene.radius_m;
+    auto row = [&](const std::vector<const slump::SlumpResult*>& runs, double sf, io::Cell exponent) {
+        std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall;
+        std::size_t at_rest = 0;
+        for (const auto* r : runs) {
+            sh.push_back(r->slump() / r->initial_height), mm.push_back(r->slump() * 1e3), d95.push_back(r->final.spread_d95 * 1e3);
+            prof.push_back(100 * slump::compare_to(study.fine, *r).profile_error);
+            if (r->came_to_rest) ++at_rest, rest_t.push_back(r->time_to_rest());
+            phi.push_back(r->fill.solid_fraction), z.push_back(r->fill.coordination);
+            if (r->final.repose_angle_deg) repose.push_back(*r->final.repose_angle_deg);
+            particles.push_back(double(r->particles)), steps.push_back(double(r->steps)), wall.push_back(r->wall_s);
+        }
+        const double work = stats::summarize(particles).mean * stats::summarize(steps).mean;
+        const auto s = stats::summarize(sh), d = stats::summarize(d95);
+        t.rows.push_back({sf, exponent, static_cast<double>(runs.size()), stats::summarize(particles).mean, stats::summarize(steps).mean,
+                          stats::summarize(wall).mean, study.fine.particle_steps / work, study.fine.wall_s / stats::summarize(wall).mean,
+                          s.mean, s.sd, stats::summarize(mm).mean, stats::summarize(mm).mean * 1e-3 / r_fine, d.mean, d.sd,
+                          stats::summarize(prof).mean, std::to_string(at_rest) + " of " + std::to_string(runs.size()),
+                          mean_or_na(rest_t), stats::summarize(phi).mean, stats::summarize(z).mean, mean_or_na(repose)});
+    };
+    row(study.fine_ensemble(), 1.0, io::Cell("fine"));
+    for (std::size_t i = 0; i < study.runs.size(); ++i) row(study.coarse_ensemble(i), study.runs[i].grain.sf, study.runs[i].grain.exponent);
+    t.notes.push_back("profile_distance_pct: mean over the seeds of each run's shape distance from the fine mean shape; for the fine "
+                      "ensemble, its own run-to-run scatter (the noise floor)");
+    t.notes.push_back("time_to_rest_s: from the cone's removal until the pile was at rest (mean over the runs that came to rest)");
+    t.notes.push_back("fill_solid_fraction: sphere volume over the cone volume below the fill's top, before the lift");
+    return t;
+}
+
 io::Table study_table(const slump::Study& study, const std::string& scene_label) {
     io::Table t;
-    t.title = "Slump test, coarse runs against the fine reference (" + scene_label + ")";
-    t.metadata = {{"scene", scene_label},
-                  {"tolerances", "slump " + format_short(100 * study.tolerances.slump) + " %, spread d95 " +
-                                     format_short(100 * study.tolerances.spread) + " %, profile L2 " +
-                                     format_short(100 * study.tolerances.profile) + " %"}};
-    t.columns = {"sf",          "exponent",       "particles",     "steps",           "dt_us",
-                 "wall_s",      "speedup_wall",   "speedup_work",  "slump_mm",        "slump_error_pct",
-                 "spread_d95_mm", "spread_error_pct", "profile_error_pct", "repose_deg", "verdict", "remarks"};
-    t.rows.push_back(row(study.reference, "reference"));
-    for (const auto& r : study.replicas) t.rows.push_back(row(r, "seed " + std::to_string(r.scene.seed)));
-    for (const auto& r : study.runs) t.rows.push_back(row(r, ""));
-    t.notes.push_back("errors are signed (coarse - fine) / fine, except the profile's relative L2 norm");
-    if (!study.replicas.empty())
-        t.notes.push_back("rows 'seed N': the fine scene filled with another seed, against the reference: the noise floor of every error");
-    t.notes.push_back("speedup_work: fine particle-steps / coarse particle-steps; speedup_wall depends on the threads of each run");
+    t.title = "Slump runs, each against the fine ensemble's means (" + scene_label + ")";
+    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)}};
+    t.columns = {"sf",       "exponent",        "seed",          "particles",      "steps",          "dt_us",
+                 "wall_s",   "speedup_wall",    "speedup_work",  "slump_mm",       "slump_over_height", "slump_error_pct_of_height",
+                 "spread_d95_mm", "spread_error_pct", "profile_error_pct", "repose_deg", "time_to_rest_s", "remarks"};
+    auto add = [&](const slump::StudyRun& r, io::Cell exponent) {
+        const auto& x = r.result;
+        const auto& c = r.versus_reference;
+        t.rows.push_back({r.grain.sf, exponent, static_cast<double>(r.scene.seed), static_cast<double>(x.particles),
+                          static_cast<double>(x.steps), x.dt * 1e6, x.wall_s, c.wall_speedup, c.work_speedup, x.slump() * 1e3,
+                          x.slump() / x.initial_height, 100 * c.slump_error, x.final.spread_d95 * 1e3, 100 * c.spread_error,
+                          100 * c.profile_error, x.final.repose_angle_deg ? io::Cell(*x.final.repose_angle_deg) : io::Cell("n/a"),
+                          x.came_to_rest ? io::Cell(x.time_to_rest()) : io::Cell("n/a"), remarks(r)});
+    };
+    add(study.reference, io::Cell("fine"));
+    for (const auto& r : study.replicas) add(r, io::Cell("fine"));
+    const std::size_t others = study.runs.empty() ? 0 : study.coarse_seeds.size() / study.runs.size();
+    for (std::size_t i = 0; i < study.runs.size(); ++i) {
+        add(study.runs[i], study.runs[i].grain.exponent);
+        for (std::size_t j = 0; j < others; ++j) add(study.coarse_seeds[i * others + j], study.runs[i].grain.exponent);
+    }
+    t.notes.push_back("slump_error_pct_of_height: slump over the fill height minus the fine ensemble's mean, in % of the height");
+    t.notes.push_back("spread and profile errors: relative to the fine ensemble's mean d95 and mean shape (fringe and empty bins do "
+                      "not count; docs/slump-measures.md)");
     return t;
 }
 
 io::Table best_exponent_table(const slump::Study& study, const std::vector<double>& scale_factors) {
     io::Table t;
-    t.title = "Exponent with the smallest profile error, per scale factor";
-    t.columns = {"sf", "best_exponent", "profile_error_pct", "slump_error_pct", "spread_error_pct", "speedup_work", "verdict"};
-    if (!study.replicas.empty()) {
-        const auto n = study.noise_floor();
-        t.metadata = {{"noise floor (fine vs fine, other seeds, largest)",
-                       "profile " + format_short(100 * n.profile_error, 3) + " %, slump " + format_short(100 * n.slump_error, 3) +
-                           " %, spread " + format_short(100 * n.spread_error, 3) + " %"}};
-    }
+    t.title = "Exponent whose ensemble has the smallest profile distance, per scale factor";
+    t.columns = {"sf", "best_exponent", "profile_distance_pct", "slump_diff_pct_of_height", "spread_diff_pct", "verdict"};
+    const auto& n = study.noise;
+    t.metadata = {{"noise floor (fine ensemble, sd over seeds)",
+                   "slump " + format_short(100 * n.slump_over_height.sd, 3) + " % of the height, spread " +
+                       format_short(100 * n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300), 3) + " %, profile " +
+                       format_short(100 * n.profile.mean, 3) + " % (each fine run from the fine mean shape)"}};
     for (double sf : scale_factors) {
         const auto& b = study.best_at(sf);
-        const auto& c = b.versus_reference;
-        t.rows.push_back({sf, b.grain.exponent, 100 * c.profile_error, 100 * c.slump_error, 100 * c.spread_error, c.work_speedup,
-                          verdict(b)});
+        t.rows.push_back({sf, b.exponent, 100 * b.criteria[2].estimate, 100 * b.criteria[0].estimate, 100 * b.criteria[1].estimate,
+                          stats::verdict_name(b.overall)});
     }
     return t;
 }

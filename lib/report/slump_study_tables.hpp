@@ -1,6 +1,10 @@
-// Tables of a slump coarse-graining study (check-exponent, sweep, report): one row per run against
-// the fine reference; the exponent with the smallest profile error per S_f. (The similarity groups
-// each exponent keeps or breaks: report/similarity_table.hpp.)
+// Tables of a slump coarse-graining study (check-exponent, sweep, report):
+//  verdict_table  — one row per (S_f, k) ensemble: the three criteria's 95 % intervals, the
+//                   tolerances, PASS / FAIL / INCONCLUSIVE, and the smallest confirmable tolerance;
+//  ensemble_table — one row per ensemble (the fine one first): means, spreads and costs;
+//  study_table    — one row per run (every seed), against the fine ensemble's means;
+//  best_exponent_table — per S_f, the exponent whose ensemble has the smallest profile distance.
+// (The similarity groups each exponent keeps or breaks: report/similarity_table.hpp.)
 #pragma once
 
 #include <vector>
@@ -10,10 +14,9 @@
 
 namespace demscale::report {
 
-// Reference row first (S_f = 1), then every run. Errors in %, lengths in mm, wall time in s.
+io::Table verdict_table(const slump::Study& study, const std::string& scene_label);
+io::Table ensemble_table(const slump::Study& study, const std::string& scene_label);
 io::Table study_table(const slump::Study& study, const std::string& scene_label);
-
-// Per S_f: the exponent with the smallest profile error, its errors and speed-up.
 io::Table best_exponent_table(const slump::Study& study, const std::vector<double>& scale_factors);
 
 }  // namespace demscale::report

@@ -1,5 +1,6 @@
 #include "slump/comparison.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace demscale::slump {
@@ -14,30 +15,60 @@ double profile_height_at(const std::vector<ProfilePoint>& profile, double radius
     return a.height + (b.height - a.height) * (radius - a.radius) / (b.radius - a.radius);
 }
 
-bool RunComparison::within(const Tolerances& t) const {
-    return std::abs(slump_error) <= t.slump && std::abs(spread_error) <= t.spread && profile_error <= t.profile;
+std::vector<double> pile_shape(const PileMeasures& pile, const std::vector<double>& radii, double floor_level) {
+    std::vector<ProfilePoint> occupied;  // empty bins dropped: interpolation bridges them
+    for (const auto& q : pile.profile)
+        if (q.height > 0) occupied.push_back({q.radius, q.height > floor_level ? q.height : 0.0});
+    std::vector<double> h;
+    for (double r : radii) h.push_back(occupied.empty() || r > occupied.back().radius ? 0.0 : profile_height_at(occupied, r));
+    return h;
 }
 
-RunComparison compare_runs(const SlumpResult& fine, const SlumpResult& coarse) {
-    auto relative = [](double coarse_value, double fine_value) { return (coarse_value - fine_value) / fine_value; };
-    RunComparison c;
-    c.slump_error = relative(coarse.slump(), fine.slump());
-    c.spread_error = relative(coarse.final.spread_d95, fine.final.spread_d95);
-    // Bins cover both piles: the fine bins, extended to the coarse pile's reach.
-    double diff2 = 0, ref2 = 0;
-    const double width = fine.final.profile.size() > 1 ? fine.final.profile[1].radius - fine.final.profile[0].radius : 0;
-    const double reach = std::max(fine.final.profile.empty() ? 0 : fine.final.profile.back().radius,
-                                  coarse.final.profile.empty() ? 0 : coarse.final.profile.back().radius);
-    for (double r = fine.final.profile.empty() ? 0 : fine.final.profile.front().radius; width > 0 && r <= reach + 0.5 * width;
-         r += width) {
-        const double h = profile_height_at(fine.final.profile, r), hc = profile_height_at(coarse.final.profile, r);
-        diff2 += (hc - h) * (hc - h);
-        ref2 += h * h;
+double fringe_level(const PileMeasures& a, const PileMeasures& b) { return 1.25 * std::max(a.foot, b.foot); }
+
+std::vector<double> FineReference::shape(double floor_level) const {
+    std::vector<double> mean(radii.size(), 0.0);
+    for (const auto& p : piles) {
+        const auto s = pile_shape(p, radii, floor_level);
+        for (std::size_t i = 0; i < s.size(); ++i) mean[i] += s[i] / static_cast<double>(piles.size());
     }
-    c.profile_error = ref2 > 0 ? std::sqrt(diff2 / ref2) : 0;
-    c.wall_speedup = coarse.wall_s > 0 ? fine.wall_s / coarse.wall_s : 0;
-    const double work_coarse = double(coarse.particles) * double(coarse.steps);
-    c.work_speedup = work_coarse > 0 ? double(fine.particles) * double(fine.steps) / work_coarse : 0;
+    return mean;
+}
+
+double shape_distance(const std::vector<double>& a, const std::vector<double>& ref) {
+    double d2 = 0, r2 = 0;
+    for (std::size_t i = 0; i < ref.size(); ++i) d2 += (a[i] - ref[i]) * (a[i] - ref[i]), r2 += ref[i] * ref[i];
+    return r2 > 0 ? std::sqrt(d2 / r2) : 0;
+}
+
+FineReference fine_reference(const std::vector<const SlumpResult*>& fine, double radius, double extra_reach) {
+    FineReference f;
+    if (fine.empty()) return f;
+    double reach = extra_reach;
+    for (const auto* r : fine) reach = std::max(reach, r->final.spread_max);
+    for (double x = radius; x <= 0.5 * reach + 2 * radius; x += 2 * radius) f.radii.push_back(x);
+    const double n = static_cast<double>(fine.size());
+    for (const auto* r : fine) {
+        f.slump_over_height += r->slump() / r->initial_height / n;
+        f.spread_d95 += r->final.spread_d95 / n;
+        f.wall_s += r->wall_s / n;
+        f.particle_steps += double(r->particles) * double(r->steps) / n;
+        f.piles.push_back(r->final);
+    }
+    return f;
+}
+
+RunComparison compare_to(const FineReference& f, const SlumpResult& run) {
+    RunComparison c;
+    c.slump_error = run.slump() / run.initial_height - f.slump_over_height;
+    c.spread_error = (run.final.spread_d95 - f.spread_d95) / f.spread_d95;
+    if (!f.piles.empty()) {
+        const double level = fringe_level(f.piles.front(), run.final);
+        c.profile_error = shape_distance(pile_shape(run.final, f.radii, level), f.shape(level));
+    }
+    c.wall_speedup = run.wall_s > 0 ? f.wall_s / run.wall_s : 0;
+    const double work = double(run.particles) * double(run.steps);
+    c.work_speedup = work > 0 ? f.particle_steps / work : 0;
     return c;
 }
 

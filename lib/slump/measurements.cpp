@@ -13,6 +13,7 @@ double lone_sphere_top(const SlumpScene& s) {
 PileMeasures measure_pile(const dem::Particles& p, double foot) {
     if (p.mobile_count() != p.size()) return measure_pile(p.mobile(), foot);
     PileMeasures m;
+    m.foot = foot;
     if (p.size() == 0) return m;
     const double r = p.radius[0];
     double cx = 0, cy = 0;

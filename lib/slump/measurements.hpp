@@ -11,6 +11,7 @@
 //                 high fringe that rolled away (which matters when the pile is few spheres high).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "dem/particles.hpp"
@@ -24,7 +25,9 @@ struct ProfilePoint {
 };
 
 struct PileMeasures {
-    double height = 0, spread_d95 = 0, spread_max = 0, repose_angle_deg = 0;
+    double height = 0, spread_d95 = 0, spread_max = 0;
+    double foot = 0;  // the top of a lone sphere on the floor, m (as passed to measure_pile)
+    std::optional<double> repose_angle_deg;  // none where the flank has fewer than two bins (no slope)
     std::vector<ProfilePoint> profile;
 };
 

@@ -15,7 +15,9 @@ namespace {
 
 // Part of every key: bump it whenever a change to the engine or the protocol changes results, so
 // runs cached by older code are not reused.
-constexpr int cache_format = 3;  // 2: history carries the energy ledger; 3: repose flank above the foot
+// 2: history carries the energy ledger; 3: repose flank above the foot; 4: poured fills, quantile
+// rest criterion, fill measures and motion at the end.
+constexpr int cache_format = 4;
 
 std::string canonical(const SlumpScene& s) {
     std::string t;
@@ -36,11 +38,14 @@ std::string canonical(const SlumpScene& s) {
     if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);
     if (s.rolling_model != RollingModel::epsd) add("rolling_model", static_cast<double>(s.rolling_model));
     if (m.rolling_damping > 0) add("eta_r", m.rolling_damping);
-    add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
-    add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
-    add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
+    if (s.wet) {  // a dry run uses no liquid parameter: coarse runs of every k share one key
+        add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
+        add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
+        add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
+    }
     add("dt", s.dt_s), add("g", s.gravity), add("settle", s.settle_time_s), add("spread", s.spread_time_s);
     add("rest_speed", s.rest_speed_m_per_s), add("rest_duration", s.rest_duration_s), add("skin", s.skin_m);
+    add("fill_kind", static_cast<double>(s.fill)), add("pour_time", s.pour_time_s), add("rest_quantile", s.rest_quantile);
     return t;
 }
 
@@ -80,7 +85,13 @@ void RunCache::store(const std::string& key, const SlumpResult& r, int threads) 
     j["settle_end"] = r.settle_end, j["lift_end"] = r.lift_end, j["end"] = r.end;
     j["settled"] = r.settled, j["came_to_rest"] = r.came_to_rest, j["initial_height"] = r.initial_height;
     j["height"] = r.final.height, j["spread_d95"] = r.final.spread_d95, j["spread_max"] = r.final.spread_max;
-    j["repose_angle_deg"] = r.final.repose_angle_deg;
+    j["foot"] = r.final.foot;
+    j["repose_angle_deg"] = r.final.repose_angle_deg ? nlohmann::json(*r.final.repose_angle_deg) : nlohmann::json();
+    const auto& f = r.fill;
+    j["fill"] = {f.top, f.solid_fraction, f.core_fraction, f.coordination, f.max_overlap, f.core_points};
+    j["pour_time"] = r.pour_time, j["pour_steps"] = r.pour_steps, j["rest_since"] = r.rest_since;
+    const auto& m = r.motion;
+    j["motion"] = {m.speed_p50, m.speed_p99, m.speed_max, m.spin_p99, m.moving, m.moving_at_edge};
     for (const auto& p : r.final.profile) j["profile"].push_back({p.radius, p.height});
     for (const auto& h : r.history) j["history"].push_back(history_row(h));
     // The state first: an entry counts only once its JSON exists.
@@ -100,7 +111,13 @@ std::optional<SlumpResult> RunCache::load(const std::string& key) const {
         r.settle_end = j.at("settle_end"), r.lift_end = j.at("lift_end"), r.end = j.at("end");
         r.settled = j.at("settled"), r.came_to_rest = j.at("came_to_rest"), r.initial_height = j.at("initial_height");
         r.final.height = j.at("height"), r.final.spread_d95 = j.at("spread_d95"), r.final.spread_max = j.at("spread_max");
-        r.final.repose_angle_deg = j.at("repose_angle_deg");
+        r.final.foot = j.at("foot");
+        if (!j.at("repose_angle_deg").is_null()) r.final.repose_angle_deg = j.at("repose_angle_deg").get<double>();
+        const auto& f = j.at("fill");
+        r.fill = {f.at(0), f.at(1), f.at(2), f.at(3), f.at(4), f.at(5)};
+        r.pour_time = j.at("pour_time"), r.pour_steps = j.at("pour_steps"), r.rest_since = j.at("rest_since");
+        const auto& m = j.at("motion");
+        r.motion = {m.at(0), m.at(1), m.at(2), m.at(3), m.at(4), m.at(5)};
         for (const auto& p : j.at("profile")) r.final.profile.push_back({p.at(0), p.at(1)});
         for (const auto& h : j.at("history")) r.history.push_back(history_point(h));
         r.final_state = io::read_particle_state((dir_ / (key + ".csv")).string());

@@ -14,6 +14,8 @@
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "slump/fill.hpp"
+#include "slump/motion.hpp"
+#include "slump/pour.hpp"
 #include "slump/run_cache.hpp"
 
 namespace demscale::slump {
@@ -21,15 +23,6 @@ namespace demscale::slump {
 namespace {
 
 using namespace dem;
-
-// Every particle slower than `speed` (m/s)? Stops at the first that is not: while the pile moves,
-// that is within the first few.
-bool all_slower_than(const Particles& p, double speed) {
-    const double limit = speed * speed;
-    for (const auto& v : p.velocity)
-        if (!(v.squaredNorm() < limit)) return false;
-    return true;
-}
 
 // Where the protocol stands: with the engine's own checkpoint, all a resumed run needs.
 struct ProtocolState {
@@ -39,23 +32,74 @@ struct ProtocolState {
     double wall_s = 0;        // wall time spent before this process
     std::uint8_t settled = 0;
     double settle_end = 0, initial_height = 0, lifted_at = 0;
+    FillMeasures fill;
+    double pour_time = 0;
+    std::uint64_t pour_steps = 0;
+    std::uint64_t pile = 0;  // spheres in the pile (a resumed engine is sized by the checkpoint)
 };
-constexpr char slump_checkpoint_magic[16] = "demscale-slump2";
+constexpr char slump_checkpoint_magic[16] = "demscale-slump3";
 
-template <bool Ledger, class Law>
-SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
-                     const SlumpPhases& phases) {
-    const auto clock_start = std::chrono::steady_clock::now();
+// The walls: the floor and the cone, standing (its lift is scheduled later).
+std::vector<Wall> slump_walls(const SlumpScene& s) {
     FrustumWall cone;
     cone.bottom_radius = 0.5 * s.bottom_diameter_m;
     cone.top_radius = 0.5 * s.top_diameter_m;
     cone.height = s.height_m;
     cone.velocity = Vec3(0, 0, s.lift_speed_m_per_s);
+    return {PlaneWall{}, cone};
+}
+
+// Steps sim until all but (1 − rest_quantile) of the first `pile` spheres have been slower than the
+// rest speed for rest_duration (true), or until `end` (false). still_since: s, −1 while moving.
+// before() runs before each step (interrupt checks), after() after it (samples, progress).
+template <class Sim, class Before, class After>
+bool run_until_rest(Sim& sim, const SlumpScene& s, std::size_t pile, double end, double& still_since, Before before, After after) {
+    while (sim.time() < end) {
+        before();
+        sim.step();
+        after();
+        if (quantile_slower_than(sim.particles(), pile, s.rest_speed_m_per_s, s.rest_quantile)) {
+            if (still_since < 0) still_since = sim.time();
+            if (sim.time() - still_since >= s.rest_duration_s) return true;
+        } else {
+            still_since = -1;
+        }
+    }
+    return false;
+}
+
+// The poured fill (slump/pour.hpp), each batch settled by this law's engine with the cone standing.
+// An interrupt during the pour stops without a checkpoint (a rerun pours again, identically).
+template <class Law>
+Particles pour_with(const SlumpScene& s, const Law& law, const std::function<void(const SlumpProgress&)>& progress,
+                    double& pour_time, std::uint64_t& pour_steps) {
+    return pour_fill(s, [&](Particles pile) {
+        const std::size_t n = pile.size();
+        pile.append(floor_grains(s));
+        Simulation<Law, false> sim(std::move(pile), law, slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
+        const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
+        double still_since = -1;
+        auto check = [] {
+            if (interrupt_requested()) throw Interrupted("interrupted while pouring the fill (no checkpoint: a rerun pours again)", "");
+        };
+        run_until_rest(sim, s, n, s.pour_time_s, still_since, check, [&] {
+            if (progress && sim.steps() % report_every == 0)
+                progress({"pour", pour_time + sim.time(), pour_time + s.pour_time_s, pour_steps + sim.steps(), 0, &sim.particles()});
+        });
+        pour_time += sim.time(), pour_steps += sim.steps();
+        return sim.particles().mobile();
+    });
+}
+
+template <bool Ledger, class Law>
+SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
+                     const SlumpPhases& phases, ProtocolState st = {}) {
+    const auto clock_start = std::chrono::steady_clock::now();
     SlumpResult res;
     res.particles = particles.size();
+    st.pile = res.particles;
     particles.append(floor_grains(s));  // after the pile: pile indices are the same as without them
-    Simulation<Law, Ledger> sim(std::move(particles), std::move(law), {PlaneWall{}, cone}, Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
-    ProtocolState st;
+    Simulation<Law, Ledger> sim(std::move(particles), std::move(law), slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
     const std::string key = scene_key(s);
     auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
     if (!phases.resume.empty()) {
@@ -73,6 +117,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         if (st.phase >= 1) schedule_lift();
         if (st.phase >= 2) sim.remove_wall(1);
         sim.load(in);
+        res.particles = st.pile;
     }
     auto wall_time = [&] { return st.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
     const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
@@ -110,27 +155,18 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         io::write_file_atomically(phases.checkpoint, out.str());
         throw Interrupted(where, phases.checkpoint.string());
     };
-    // Steps until every particle has been slower than rest_speed for rest_duration, or until `end`.
-    auto run_until_rest = [&](const std::string& phase, double end) {
-        while (sim.time() < end) {
-            if (interrupt_requested()) stop_here();
-            sim.step();
-            tick(phase, end);
-            if (all_slower_than(sim.particles(), s.rest_speed_m_per_s)) {
-                if (st.still_since < 0) st.still_since = sim.time();
-                if (sim.time() - st.still_since >= s.rest_duration_s) return true;
-            } else {
-                st.still_since = -1;
-            }
-        }
-        return false;
+    auto rest = [&](const std::string& phase, double end) {
+        return run_until_rest(
+            sim, s, res.particles, end, st.still_since, [&] { if (interrupt_requested()) stop_here(); }, [&] { tick(phase, end); });
     };
-
     if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
-        if (!phases.start) st.settled = run_until_rest("settle", s.settle_time_s);
+        if (!phases.start) st.settled = rest("settle", s.settle_time_s);
         st.settle_end = sim.time();
+        st.fill = measure_fill(sim.particles(), s);
         st.initial_height = measure_pile(sim.particles(), lone_sphere_top(s)).height;
         if (phases.settle_only) {
+            res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
+            res.motion = summarize_motion(sim.particles(), res.particles, s.rest_speed_m_per_s);
             res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
             res.steps = sim.steps();
             res.final = measure_pile(sim.particles(), lone_sphere_top(s));
@@ -153,8 +189,11 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         sim.remove_wall(1);  // lifted clear, then removed: anything clinging to it falls back
         st.phase = 2, st.still_since = -1;
     }
-    res.came_to_rest = run_until_rest("spread", st.lifted_at + s.spread_time_s);
+    res.came_to_rest = rest("spread", st.lifted_at + s.spread_time_s);
     res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height, res.lift_end = st.lifted_at;
+    res.rest_since = res.came_to_rest ? st.still_since : -1;
+    res.motion = summarize_motion(sim.particles(), res.particles, s.rest_speed_m_per_s);
+    res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
     res.end = sim.time();
     res.steps = sim.steps();
     res.final = measure_pile(sim.particles(), lone_sphere_top(s));
@@ -189,13 +228,16 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
                       SlumpPhases phases) {
     check_slump_time_step(s, force_dt);
     const double critical = rayleigh_time(s.material, s.radius_m);
-    // A resumed run takes its particles from the checkpoint; the fill only sizes the engine.
-    Particles particles = phases.start ? *phases.start : fill_cone(s);
+    // A resumed run takes its particles from the checkpoint; the lattice fill only sizes the engine.
+    const bool pour = s.fill == FillKind::poured && !phases.start && phases.resume.empty();
+    Particles particles = phases.start ? *phases.start : pour ? Particles{} : fill_cone(s);
     SlumpResult res;
     // One explicit switch over the combinations a slump scene can ask for, each with or without the ledger.
     auto run = [&](auto law) {
-        return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases)
-                                    : run_with<false>(s, std::move(law), std::move(particles), progress, phases);
+        ProtocolState st;
+        if (pour) particles = pour_with(s, law, progress, st.pour_time, st.pour_steps);
+        return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases, st)
+                                    : run_with<false>(s, std::move(law), std::move(particles), progress, phases, st);
     };
     auto with_rolling = [&]<class Cohesion>(Cohesion cohesion) {
         if (!s.rolling_resistance) return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion>(s.material, cohesion));

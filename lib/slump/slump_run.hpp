@@ -5,6 +5,7 @@
 // each choice is its own compiled engine, so a dry run executes no bridge code.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -12,7 +13,9 @@
 
 #include "dem/energy.hpp"
 #include "dem/particles.hpp"
+#include "slump/fill_measures.hpp"
 #include "slump/measurements.hpp"
+#include "slump/motion.hpp"
 #include "slump/slump_scene.hpp"
 
 namespace demscale::slump {
@@ -38,10 +41,17 @@ struct SlumpResult {
     bool settled = false, came_to_rest = false;
     bool energy_ledger = false;  // the history's losses and wall work were booked
     double initial_height = 0;
+    FillMeasures fill;                  // the settled fill, before the lift
+    double pour_time = 0;               // simulated time spent pouring (poured fills), s
+    std::size_t pour_steps = 0;
+    double rest_since = -1;             // s: when the final rest window began; −1: not at rest
+    MotionSummary motion;               // what still moved at the end
     PileMeasures final;
     std::vector<TimePoint> history;  // at the start, then every 5 ms
     dem::Particles final_state;
     double slump() const { return initial_height - final.height; }
+    // From the cone's removal to the start of the final rest window, s; NaN when not at rest.
+    double time_to_rest() const { return came_to_rest ? rest_since - lift_end : std::nan(""); }
     // Change of the ledger's balance over the run relative to the energy dissipated (0 for an exact
     // integrator; about 1 % at the usual dt). 0 without the ledger.
     double energy_balance_error() const;

@@ -13,13 +13,14 @@ namespace {
 const std::map<std::string, std::vector<std::string_view>> schema = {
     {"scene", {"name"}},
     {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
-    {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed"}},
+    {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed", "fill"}},
     {"floor", {"rough", "rough_diameter_mm"}},
     {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
                  "rolling_model", "rolling_damping"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
                 "bridge_variant"}},
-    {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "rest_speed_m_per_s", "rest_duration_s", "skin_mm"}},
+    {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s", "rest_duration_s",
+             "rest_quantile", "skin_mm"}},
     {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
 };
 void positive(double x, const std::string& f) { require_positive(x, f); }
@@ -31,6 +32,15 @@ auto open_interval(double lo, double hi) {
 double bridge_vhat(const SlumpScene& s) {
     const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
     return bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3) / std::pow(s.radius_m, 3);
+}
+
+double cone_radius_at(const SlumpScene& s, double z) {
+    return 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * z / s.height_m;
+}
+
+double cone_volume_below(const SlumpScene& s, double z) {  // frustum: π z (r₀² + r₀ r_z + r_z²) / 3
+    const double r0 = cone_radius_at(s, 0), rz = cone_radius_at(s, z);
+    return M_PI * z * (r0 * r0 + r0 * rz + rz * rz) / 3;
 }
 
 SlumpScene load_slump_scene(const std::string& path) {
@@ -52,6 +62,12 @@ SlumpScene load_slump_scene(const std::string& path) {
         if (!(x >= 0 && x < 4294967296.0 && std::floor(x) == x)) throw InputError(f, format_number(x), "an integer in [0, 2^32)");
     }));
 
+    if (auto f = r.text("particles.fill")) {
+        if (*f == "poured") s.fill = FillKind::poured;
+        else if (*f == "lattice") s.fill = FillKind::lattice;
+        else throw InputError(r.where("particles.fill", "particles.fill"), *f, "\"poured\" or \"lattice\"");
+    }
+
     s.rough_floor = r.boolean("floor.rough").value_or(false);
     s.rough_floor_diameter_m = r.checked("floor.rough_diameter_mm", 150, positive) * mm;
 
@@ -71,7 +87,9 @@ SlumpScene load_slump_scene(const std::string& path) {
     }
     // Ai et al.'s dashpot belongs to their model C (epsd); LIGGGHTS' epsd2 and cdt have none.
     const bool dashpot = s.rolling_resistance && s.rolling_model == RollingModel::epsd;
-    s.material.rolling_damping = r.checked("contact.rolling_damping", 0, [&](double x, const std::string& f) {
+    // Default 0.3, Ai et al.'s (2011) own value for model C: without the dashpot a sphere rocks on the
+    // rolling spring with no loss, and a pile never comes to rest (docs/rest-and-damping.md).
+    s.material.rolling_damping = r.checked("contact.rolling_damping", dashpot ? 0.3 : 0.0, [&](double x, const std::string& f) {
         if (!(x >= 0 && x <= 1)) throw InputError(f, format_number(x), "[0, 1]");
         if (x > 0 && !dashpot) throw InputError(f, format_number(x), "0 unless rolling_model = \"epsd\" (only Ai's model C has the dashpot)");
     });
@@ -91,8 +109,12 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.gravity = r.checked("run.gravity_m_per_s2", 9.81, positive);
     s.settle_time_s = r.checked("run.settle_time_s", 0.3, positive);
     s.spread_time_s = r.checked("run.spread_time_s", 0.4, positive);
+    s.pour_time_s = r.checked("run.pour_time_s", 0.3, positive);
     s.rest_speed_m_per_s = r.checked("run.rest_speed_m_per_s", 1e-3, positive);
     s.rest_duration_s = r.checked("run.rest_duration_s", 0.02, positive);
+    s.rest_quantile = r.checked("run.rest_quantile", 0.99, [](double x, const std::string& f) {
+        if (!(x >= 0.5 && x <= 1)) throw InputError(f, format_number(x), "[0.5, 1] (the share of spheres that must be slower)");
+    });
     s.skin_m = r.checked("run.skin_mm", 0.3, positive) * mm;
     s.tolerances.slump = r.checked("check.slump_tolerance", 0.10, positive);
     s.tolerances.spread = r.checked("check.spread_tolerance", 0.10, positive);

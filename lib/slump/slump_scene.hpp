@@ -23,6 +23,11 @@ struct Tolerances {
 // constant_torque: Ai et al.'s model type A (LIGGGHTS' cdt).
 enum class RollingModel { epsd, epsd2, constant_torque };
 
+// How the cone is filled. poured: spheres inserted at random in batches and settled under gravity,
+// then struck off level with the fill height (slump/pour.hpp), the default; lattice: a jittered hcp
+// lattice cut to the cone (slump/fill.hpp), denser and crystalline, kept for comparison.
+enum class FillKind { poured, lattice };
+
 struct SlumpScene {
     std::string source;
     std::string dt_field = "run.dt_s";  // where dt came from, for messages ("file:line: run.dt_s")
@@ -34,7 +39,8 @@ struct SlumpScene {
     double radius_m = 1e-3;
     double fill_height_m = 0.054;
     unsigned seed = 1;
-    dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0};
+    FillKind fill = FillKind::poured;
+    dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0.3};  // η_r = 0.3: Ai's dashpot (epsd)
     bool rolling_resistance = true;
     RollingModel rolling_model = RollingModel::epsd;
     // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
@@ -51,8 +57,10 @@ struct SlumpScene {
     double gravity = 9.81;
     double settle_time_s = 0.3;    // at most; ends earlier once at rest
     double spread_time_s = 0.4;    // after the lift; ends earlier once at rest
-    double rest_speed_m_per_s = 1e-3;  // "at rest": every particle slower than this…
-    double rest_duration_s = 0.02;     // …for this long
+    double pour_time_s = 0.3;      // per batch of the poured fill, at most; ends earlier once at rest
+    double rest_speed_m_per_s = 1e-3;  // "at rest": all but (1 − rest_quantile) of the spheres slower than this…
+    double rest_duration_s = 0.02;     // …for this long (slump/motion.hpp)
+    double rest_quantile = 0.99;
     double skin_m = 0.3e-3;
     Tolerances tolerances;
 };
@@ -60,6 +68,10 @@ struct SlumpScene {
 // The liquid per bridge V/R³ of the scene's wet contacts: Eq. 5 with the particle mass (the same
 // for every S_f, since V scales with the mass).
 double bridge_vhat(const SlumpScene& scene);
+
+// The cone's inner radius at height z above the floor, m, and the volume inside it below z, m³.
+double cone_radius_at(const SlumpScene& scene, double z);
+double cone_volume_below(const SlumpScene& scene, double z);
 
 // Throws InputError (file, line, key, value, accepted range) for a bad scene.
 SlumpScene load_slump_scene(const std::string& path);

@@ -1,5 +1,6 @@
-// A coarse-graining study of the slump test: the fine reference and, for every candidate exponent k
-// and scale factor S_f, the coarse run, each compared to the reference. Runs are independent, so
+// A coarse-graining study of the slump test: an ensemble of fine runs (seeds seed, seed+1, …) and,
+// for every candidate exponent k and scale factor S_f, an ensemble of coarse runs with the same
+// seeds, judged against the fine ensemble (slump/ensemble_verdict.hpp). Runs are independent, so
 // they run side by side (jobs × threads each), costliest first; each finished run is cached by its
 // scene key at once, so an interrupted study resumes where it stopped.
 #pragma once
@@ -12,6 +13,7 @@
 
 #include "slump/coarse_grain.hpp"
 #include "slump/comparison.hpp"
+#include "slump/ensemble_verdict.hpp"
 #include "slump/run_cache.hpp"
 
 namespace demscale::slump {
@@ -22,7 +24,7 @@ struct StudyPlan {
     std::vector<double> exponents = {1, 3};
     std::vector<std::string> scaled;  // parameters scaled by the implied basis (coarse_grain.hpp)
     Tolerances tolerances;            // usually the scene's
-    int replicas = 1;                 // extra fine runs with seeds seed+1…: the fine-vs-fine noise floor
+    int seeds = 8;                    // runs per ensemble, fine and each coarse (S_f, k): seeds seed … seed+seeds−1
     int jobs = 1, threads_per_job = 1;
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
@@ -35,21 +37,25 @@ struct StudyRun {
     std::vector<std::string> warnings;  // geometry limits (coarse_grain.hpp)
     SlumpResult result;
     bool from_cache = false;
-    RunComparison versus_reference;     // zero for the reference itself
-    bool within_tolerance = true;
+    RunComparison versus_reference;     // against the fine ensemble's means
 };
 
 struct Study {
-    StudyRun reference;
-    std::vector<StudyRun> replicas;  // the fine scene with other seeds, compared like coarse runs
-    std::vector<StudyRun> runs;      // exponent-major, then S_f in the plan's order
+    StudyRun reference;                 // the fine run with the scene's own seed
+    std::vector<StudyRun> replicas;     // the fine runs with the other seeds
+    std::vector<StudyRun> runs;         // coarse runs with the scene's seed: exponent-major, then S_f in the plan's order
+    std::vector<StudyRun> coarse_seeds; // coarse runs with the other seeds, in the same order, seed-minor
+    std::vector<EnsembleVerdict> verdicts;  // one per entry of runs
+    FineReference fine;                 // the fine ensemble's means and mean shape
+    NoiseFloor noise;                   // the fine ensemble's own spread
     Tolerances tolerances;
-    double wall_s = 0;           // this call's wall time (cached runs cost nothing)
-    bool all_within() const;  // every coarse run (replicas are not judged)
-    // The largest |error| between the reference and its replicas (zero without replicas).
-    RunComparison noise_floor() const;
-    // The run with the smallest profile error at this S_f, over the exponents.
-    const StudyRun& best_at(double sf) const;
+    double wall_s = 0;                  // this call's wall time (cached runs cost nothing)
+    double run_wall_s = 0;              // the runs' own wall times added up, cached ones included
+    stats::Verdict overall() const;     // FAIL if any ensemble fails, else INCONCLUSIVE if any is, else PASS
+    std::vector<const SlumpResult*> fine_ensemble() const;
+    std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds
+    // The verdict with the smallest profile distance at this S_f, over the exponents.
+    const EnsembleVerdict& best_at(double sf) const;
 };
 
 // Throws InputError for a bad plan: jobs, threads, replicas, exponents, any coarse scene.

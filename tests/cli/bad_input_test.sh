@@ -137,7 +137,7 @@ case $class in
     refuse_no_out 'contact_angle_deg = 95: accepted \[0, 90\) degrees' -- "$demscale" bridge --theta 95
     refuse_no_out 'basis.length = 0: accepted a finite number > 0' -- "$demscale" scaling --length 0
     refuse '--tol-slump = -1: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-slump -1
-    refuse '--replicas = -1: accepted 0 to 20' -- "$demscale" sweep --replicas -1
+    refuse '--seeds = -1: accepted 1 to 64' -- "$demscale" sweep --seeds -1
     refuse_no_out '--atol: value -1; accepted a finite number >= 0' -- "$demscale" regress --atol -1 ;;
   non_finite)
     for v in nan inf -inf; do

@@ -123,18 +123,26 @@ case $case_name in
     [ ! -e "$work/s" ] || fail "a failed run created output" ;;
   check_exponent_pass_and_fail)
     small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --cache "$work/cache" --out "$work/c" --no-png)
-    # Loose tolerances pass (exit 0), tight ones fail (exit 1) on the very same runs.
-    expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --tol-slump 10 --tol-spread 10 --tol-profile 10
-    grep -q '3 distinct runs\|2 distinct runs' "$work/out" || fail "study did not say what it runs"
-    expect 1 'verdict: FAIL' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --tol-profile 1e-6
+    # Loose tolerances pass (exit 0), tight ones fail (exit 1) on the very same runs; one seed cannot
+    # decide (INCONCLUSIVE, exit 4).
+    expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-slump 10 --tol-spread 10 --tol-profile 10
+    grep -q '6 distinct runs' "$work/out" || fail "study did not say what it runs"
+    grep -q 'left' "$work/out" || fail "no estimate of the time left"
+    expect 1 'verdict: FAIL' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-profile 1e-6
     grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
-    for f in check_k1.csv check_k1_profiles.csv check_k1_profiles.gp; do [ -s "$work/c/$f" ] || fail "$f missing"; done ;;
+    expect 4 'verdict: INCONCLUSIVE' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 1 --tol-slump 10 --tol-spread 10 --tol-profile 10
+    grep -q 'fewer than two seeds' "$work/out" || fail "INCONCLUSIVE without its reason"
+    expect 1 '"verdict": "FAIL"' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-profile 1e-6 --format json
+    for f in check_k1.csv check_k1_verdicts.csv check_k1_profiles.csv check_k1_profiles.gp check_k1_error_vs_k.gp; do
+      [ -s "$work/c/$f" ] || fail "$f missing"
+    done
+    grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts" ;;
   check_exponent_bad_input_exit_2)
     expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
     expect 2 '--scale = viscosity' -- "$demscale" check-exponent --exponent 1 --scale viscosity --out "$work/c"
     expect 2 '--tol-profile = -1|--tol-profile = -0.5' -- "$demscale" check-exponent --exponent 1 --tol-profile -0.5 --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" check-exponent --exponent 1 --sf 20 --out "$work/c"
-    expect 2 '--replicas = 50.*0 to 20' -- "$demscale" sweep --exponents 1 --replicas 50 --out "$work/c"
+    expect 2 '--seeds = 70.*1 to 64' -- "$demscale" sweep --exponents 1 --seeds 70 --out "$work/c"
     expect 2 '--jobs = -1' -- "$demscale" sweep --jobs -1 --out "$work/c"
     expect 2 '--exponents = "x"' -- "$demscale" report --exponents 1,x --out "$work/c"
     printf '[check]\nslump_tolerance = -1\n' >"$work/bad.toml"
@@ -144,7 +152,7 @@ case $case_name in
   report_quick_structure)
     expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"
     md="$work/r/report.md" html="$work/r/report.html"
-    for s in 'Inputs' 'Similarity table' 'Curves: Figs. 3 and 4' 'Bridge model accuracy' 'Slump test' 'Caveats'; do
+    for s in 'Verdict' 'Inputs' 'Similarity table' 'Curves: Figs. 3 and 4' 'Bridge model accuracy' 'Slump test' 'Caveats'; do
       grep -q "^## $s\$" "$md" || fail "report.md lacks section $s"
       grep -q "<h2>$s</h2>" "$html" || fail "report.html lacks section $s"
     done
@@ -159,11 +167,11 @@ case $case_name in
     sed -n '/^| /p' "$work/table.md" | head -8 >"$work/t1"
     grep -qFf "$work/t1" "$md" || fail "Table 1 in the report differs from demscale table"
     [ "$(grep -cFf "$work/t1" "$md")" -ge 7 ] || fail "Table 1 rows missing from the report"
-    "$demscale" sweep --exponents 1,3 --sf 1.4 --scene "$src/data/scenes/small_wet.toml" --cache "$work/cache" \
+    "$demscale" sweep --exponents 1,3 --sf 1.4 --seeds 3 --scene "$src/data/scenes/small_wet.toml" --cache "$work/cache" \
       --out "$work/s" --no-png --format markdown >"$work/sweep.md" 2>"$work/sweep.err" || fail "sweep failed"
     grep -q '0 to run' "$work/sweep.err" || fail "sweep did not reuse the report's runs"
     grep -E '^\| +1.4 \|' "$work/sweep.md" | awk -F'|' 'NF > 10' >"$work/rows"
-    [ "$(wc -l <"$work/rows")" -eq 2 ] || fail "sweep rows: $(cat "$work/rows")"
+    [ "$(wc -l <"$work/rows")" -eq 4 ] || fail "sweep rows (verdicts and ensembles, k = 1 and 3): $(cat "$work/rows")"
     grep -qFf "$work/rows" "$md" || fail "slump rows in the report differ from demscale sweep" ;;
   export_liggghts_deck)
     # The deck carries the scene's own values; steps by hand: lift 65 mm / 0.3 m/s / 2e-5 s = 10833,

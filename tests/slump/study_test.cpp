@@ -1,5 +1,6 @@
 // Coarse-graining study pieces: the scaled scene (against hand algebra), the similarity groups of an
-// exponent (hand derivation), run comparison on constructed profiles, the run cache, and replacement
+// exponent (hand derivation), comparison with a fine ensemble on constructed profiles and piles, the
+// run cache, and replacement
 // conserving mass and liquid.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "similarity/exponent_similarity.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/comparison.hpp"
+#include "slump/ensemble_verdict.hpp"
 #include "slump/fill.hpp"
 #include "slump/run_cache.hpp"
 
@@ -89,42 +91,85 @@ TEST_CASE("Similarity groups of an exponent: hand-derived S_f powers", "[similar
     CHECK_FALSE(similarity::exponent_similarity(3).groups[1].kept());
 }
 
-TEST_CASE("Run comparison on constructed profiles: known errors and speed-ups", "[slump][compare]") {
+TEST_CASE("Run comparison against the fine ensemble on constructed profiles: known differences and speed-ups", "[slump][compare]") {
     const double w = 0.002;
     const auto fine = triangle(0.02, w, 0.02, 0.1);
-    SECTION("the same pile sampled on coarser bins has almost no profile error") {
+    const auto ref = fine_reference({&fine}, 0.5 * w);
+    SECTION("the same pile sampled on coarser bins is almost the same shape") {
         // Linear interpolation of a linear flank is exact; only the apex bin and the foot differ.
         const auto coarse = triangle(0.02, 2 * w, 0.02, 0.1);
-        const auto c = compare_runs(fine, coarse);
+        const auto c = compare_to(ref, coarse);
         CHECK(c.slump_error == 0);
         CHECK(c.spread_error == 0);
         CHECK(c.profile_error < 0.05);
     }
-    SECTION("a pile lower by a constant factor has that factor as its L2 error") {
+    SECTION("a pile lower by a constant factor has that factor as its distance; slump in fill heights") {
         auto lower = fine;
         for (auto& p : lower.final.profile) p.height *= 0.8;
         lower.final.height = 0.05 - 0.025;
         lower.final.spread_d95 = 0.11;
-        const auto c = compare_runs(fine, lower);
+        const auto c = compare_to(ref, lower);
         CHECK(c.profile_error == Approx(0.2).epsilon(1e-12));
-        CHECK(c.slump_error == Approx(0.25).epsilon(1e-12));  // 25 mm against 20 mm
+        CHECK(c.slump_error == Approx(0.1).epsilon(1e-12));  // 25/50 against 20/50 of the fill height
         CHECK(c.spread_error == Approx(0.1).epsilon(1e-12));
-        Tolerances t;
-        CHECK_FALSE(c.within(t));
-        t.slump = 0.3, t.spread = 0.2, t.profile = 0.25;
-        CHECK(c.within(t));
+    }
+    SECTION("the fine reference averages its runs") {
+        auto taller = fine;
+        for (auto& p : taller.final.profile) p.height *= 1.2;
+        taller.final.height = 0.05 - 0.015;
+        const auto two = fine_reference({&fine, &taller}, 0.5 * w);
+        CHECK(two.slump_over_height == Approx(0.5 * (0.4 + 0.3)));
+        CHECK(compare_to(two, fine).profile_error == Approx(0.1 / 1.1).epsilon(1e-9));  // |1 − 1.1| / 1.1
     }
     SECTION("speed-ups: wall time ratio and particle-step ratio") {
         auto f = fine, c = fine;
         f.particles = 4900, f.steps = 100000, f.wall_s = 200;
         c.particles = 650, c.steps = 50000, c.wall_s = 10;
-        const auto x = compare_runs(f, c);
+        const auto x = compare_to(fine_reference({&f}, 0.5 * w), c);
         CHECK(x.wall_speedup == Approx(20));
         CHECK(x.work_speedup == Approx(4900.0 * 100000 / (650.0 * 50000)));
     }
     CHECK(profile_height_at(fine.final.profile, 0.0) == Approx(0.019));
     CHECK(profile_height_at(fine.final.profile, 0.004) == Approx(0.016));
     CHECK(profile_height_at(fine.final.profile, 1.0) == 0);
+}
+
+TEST_CASE("Profile distance of two constructed piles of one shape at different S_f is near zero, the raw rule is not",
+          "[slump][compare]") {
+    // A conical heap, tops on h(ρ) = H − ρ tan α, built of spheres of radius R and of 2R, each with a
+    // sparse fringe of lone spheres on the floor every 5 mm beyond the foot (as spheres rolled away).
+    const double H = 0.03, t = std::tan(30 * M_PI / 180), base = H / t;
+    auto pile = [&](double r) {
+        dem::Particles p;
+        for (double rho = 0; rho <= base; rho += 0.5 * r) {
+            const int n = std::max(1, static_cast<int>(2 * M_PI * rho / (2 * r)));
+            for (int k = 0; k < n; ++k) {
+                const double phi = 2 * M_PI * k / n, top = std::max(H - rho * t, 2 * r);
+                p.add({rho * std::cos(phi), rho * std::sin(phi), top - r}, r, 2500);
+            }
+        }
+        for (double rho = base + 0.005; rho < base + 0.03; rho += 0.005) p.add({rho, 0, r}, r, 2500);
+        return measure_pile(p, 2 * r);
+    };
+    SlumpResult fine, coarse;
+    fine.final = pile(1e-3), coarse.final = pile(2e-3);
+    fine.initial_height = coarse.initial_height = 0.05;
+    const auto ref = fine_reference({&fine}, 1e-3, coarse.final.spread_max);
+    const double shaped = compare_to(ref, coarse).profile_error;
+    // The same comparison on raw heights (fringe counted, empty bins as zero), the old rule.
+    double d2 = 0, r2 = 0;
+    for (double x : ref.radii) {
+        const double hf = profile_height_at(fine.final.profile, x), hc = profile_height_at(coarse.final.profile, x);
+        d2 += (hc - hf) * (hc - hf), r2 += hf * hf;
+    }
+    const double raw = std::sqrt(d2 / r2);
+    INFO("shape rule " << shaped << ", raw rule " << raw);
+    CHECK(shaped < 0.05);
+    CHECK(raw > 2 * shaped);
+    // And a different shape is told apart: a heap half as high at the same base.
+    SlumpResult flat = fine;
+    for (auto& q : flat.final.profile) q.height = q.height > 2.5e-3 ? 0.5 * q.height : q.height;
+    CHECK(compare_to(ref, flat).profile_error > 0.3);
 }
 
 TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable entries ignored", "[slump][cache]") {
@@ -143,6 +188,7 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
     const RunCache cache(dir);
     CHECK_FALSE(cache.load("0123456789abcdef"));
     SlumpResult r = triangle(0.02, 0.002, 0.01, 0.08);
+    r.final.foot = 0.002;
     r.particles = 2, r.steps = 10, r.wall_s = 1.5, r.came_to_rest = true, r.final.repose_angle_deg = 30;
     r.history = {{0.0, 0.05, 0.04, {}}, {0.005, 0.049, 0.041, {}}};
     r.history[1].energy.kinetic = 2e-4, r.history[1].energy.dissipated.bridge = 3e-5, r.history[1].energy.wall_work = 1e-6;
@@ -152,6 +198,7 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
     const auto back = cache.load("0123456789abcdef");
     REQUIRE(back);
     CHECK(back->slump() == r.slump());
+    CHECK(back->final.foot == r.final.foot);
     CHECK(back->final.profile.size() == r.final.profile.size());
     CHECK(back->final.profile[3].height == r.final.profile[3].height);
     REQUIRE(back->history.size() == 2);
@@ -188,5 +235,66 @@ TEST_CASE("Replacement conserves mass and liquid: coarse fills of the cone again
         const double v_f = bridge::liquid_bridge_volume(fine.liquid.moisture_content, fill_f.mass[0], fine.liquid.density_kg_per_m3);
         const double v_c = bridge::liquid_bridge_volume(coarse.liquid.moisture_content, fill_c.mass[0], coarse.liquid.density_kg_per_m3);
         CHECK(v_c / v_f == Approx(sf * sf * sf).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("Ensemble verdict on constructed runs: PASS, FAIL, INCONCLUSIVE where they must be, with reasons", "[slump][verdict]") {
+    // Runs whose slump over the 50 mm fill height is m + s z_i (z a fixed pattern, mean 0, sd 1) and
+    // whose profile is the matching triangle: known means and spreads.
+    const std::vector<double> z = {-1.5, -1.0, -0.5, 0.0, 0.0, 0.5, 1.0, 1.5};
+    const double zs = 1 / std::sqrt((2 * 2.25 + 2 * 1.0 + 2 * 0.25) / 7);
+    auto ensemble = [&](double mean_slump, double sd, double d95) {
+        std::vector<SlumpResult> v;
+        for (double x : z) {
+            const double slump = mean_slump + sd * zs * x;
+            auto r = triangle(0.05 - slump, 0.002, slump, d95 * (1 + 0.002 * x));
+            r.final.foot = 0.002;
+            v.push_back(r);
+        }
+        return v;
+    };
+    auto ptrs = [](const std::vector<SlumpResult>& v) {
+        std::vector<const SlumpResult*> p;
+        for (const auto& r : v) p.push_back(&r);
+        return p;
+    };
+    Tolerances tol;
+    tol.slump = 0.05, tol.spread = 0.05, tol.profile = 0.15;
+    const auto fine = ensemble(0.020, 0.001, 0.10);
+    SECTION("the same distribution passes every criterion") {
+        const auto v = judge_ensemble(ptrs(fine), ptrs(ensemble(0.020, 0.001, 0.10)), 1.4, 1, tol, 1e-3, true);
+        REQUIRE(v.criteria.size() == 3);
+        for (const auto& c : v.criteria) CHECK(c.verdict == stats::Verdict::pass);
+        CHECK(v.overall == stats::Verdict::pass);
+        CHECK(v.warnings.empty());
+    }
+    SECTION("a column that does not slump fails on slump (0.4 of the height apart)") {
+        const auto v = judge_ensemble(ptrs(fine), ptrs(ensemble(0.0, 0.0, 0.10)), 1.4, 3, tol, 1e-3, true);
+        CHECK(v.criteria[0].verdict == stats::Verdict::fail);
+        CHECK(v.criteria[0].estimate == Approx(-0.4).epsilon(1e-9));
+        CHECK(v.overall == stats::Verdict::fail);
+    }
+    SECTION("noisy coarse runs straddle the tolerance: INCONCLUSIVE, with the smallest confirmable tolerance") {
+        const auto v = judge_ensemble(ptrs(fine), ptrs(ensemble(0.021, 0.004, 0.10)), 1.4, 1, tol, 1e-3, true);
+        CHECK(v.criteria[0].verdict == stats::Verdict::inconclusive);
+        CHECK(v.criteria[0].smallest_tolerance > tol.slump);
+        CHECK(v.overall == stats::Verdict::inconclusive);
+    }
+    SECTION("a reference slumping less than a coarse diameter cannot discriminate: INCONCLUSIVE with the reason") {
+        const auto still = ensemble(0.001, 0.0001, 0.10);
+        const auto v = judge_ensemble(ptrs(still), ptrs(still), 1.96, 1, tol, 1e-3, true);
+        CHECK(v.criteria[0].verdict == stats::Verdict::inconclusive);
+        CHECK(v.criteria[0].reason.find("cannot tell exponents apart") != std::string::npos);
+    }
+    SECTION("one seed is an anecdote: INCONCLUSIVE; a tolerance under the noise warns; a dry scene says k has no effect") {
+        const auto one = judge_ensemble(ptrs(fine), {&fine[3]}, 1.4, 1, tol, 1e-3, true);
+        CHECK(one.overall == stats::Verdict::inconclusive);
+        CHECK(one.criteria[1].reason.find("fewer than two seeds") != std::string::npos);
+        Tolerances tight = tol;
+        tight.slump = 1e-4;
+        const auto dry = judge_ensemble(ptrs(fine), ptrs(fine), 1.4, 1, tight, 1e-3, false);
+        REQUIRE(dry.warnings.size() == 2);
+        CHECK(dry.warnings[0].find("below the fine ensemble's own spread") != std::string::npos);
+        CHECK(dry.warnings[1].find("no effect") != std::string::npos);
     }
 }

@@ -1,0 +1,52 @@
+// The verdict on one coarse ensemble (one S_f, one k, several seeds) against the fine ensemble:
+// an equivalence test per measure (stats/verdict.hpp) on the 95 % interval of the difference,
+//  slump   — Welch t interval of mean(s̄/H̄₀) − mean(s/H₀), tolerance absolute (a fraction of H₀);
+//  spread  — Welch t interval of mean(d̄95) − mean(d95), over the fine mean, tolerance relative;
+//  profile — bootstrap percentile interval (2 000 resamples of both ensembles' seeds, a fixed
+//            generator seed so that a verdict repeats) of the distance between the two ensembles'
+//            mean shapes (slump/comparison.hpp), tolerance relative; the distance is ≥ 0, so it
+//            passes when the interval's top lies below the tolerance.
+// It is INCONCLUSIVE, with a reason, where the data cannot decide: fewer than two seeds on a side,
+// or a fine reference slumping less than one coarse diameter (then this scene cannot tell exponents
+// apart by slump). Tolerances below the fine ensemble's own spread draw a warning.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slump/comparison.hpp"
+#include "stats/verdict.hpp"
+
+namespace demscale::slump {
+
+struct Criterion {
+    std::string measure;              // "slump", "spread", "profile"
+    double estimate = 0;              // the difference (slump, spread) or distance (profile)
+    stats::Interval interval;         // 95 %
+    double tolerance = 0;
+    stats::Verdict verdict = stats::Verdict::inconclusive;
+    double smallest_tolerance = 0;    // the smallest tolerance these data could confirm
+    std::string reason;               // why INCONCLUSIVE was forced, if it was
+};
+
+// The fine ensemble's own spread: the noise no tolerance should undercut.
+struct NoiseFloor {
+    stats::Summary slump_over_height;  // s/H₀ over the fine seeds
+    stats::Summary spread_d95;         // m
+    stats::Summary profile;            // each fine run's shape distance from the fine mean shape
+};
+NoiseFloor noise_floor(const std::vector<const SlumpResult*>& fine, const FineReference& reference);
+
+struct EnsembleVerdict {
+    double sf = 1, exponent = 1;
+    std::size_t fine_seeds = 0, coarse_seeds = 0;
+    std::vector<Criterion> criteria;   // slump, spread, profile
+    stats::Verdict overall = stats::Verdict::inconclusive;
+    std::vector<std::string> warnings;
+};
+
+// fine_radius: m. wet: false adds the note that k has no effect.
+EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, const std::vector<const SlumpResult*>& coarse,
+                               double sf, double exponent, const Tolerances& tolerances, double fine_radius, bool wet);
+
+}  // namespace demscale::slump
