@@ -88,10 +88,11 @@ int run_slump_command(const Options& o) {
     j["particles"] = r.particles;
     j["floor"] = scene.rough_floor ? "rough" : "flat";
     j["steps"] = r.steps;
+    j["pour_steps"] = r.pour_steps;
     j["dt_s"] = r.dt;
     j["critical_dt_s"] = r.critical_dt;
     j["wall_s"] = r.wall_s;
-    j["particle_steps_per_s"] = double(r.particles) * double(r.steps) / r.wall_s;
+    j["particle_steps_per_s"] = r.particle_steps() / r.wall_s;  // pour included, as in wall_s
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
     j["pour_time_s"] = r.pour_time;
     j["fill_solid_fraction"] = r.fill.solid_fraction;
@@ -177,7 +178,7 @@ std::vector<Command> slump_commands(CLI::App& app) {
     slump->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     slump->add_option("--sf", o->sf, "scale factor S_f: particles of radius S_f R")->capture_default_str();
     slump->add_option("--exponent", o->exponent, "surface tension gamma S_f^k")->capture_default_str();
-    slump->add_option("--scale", o->scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity")
+    slump->add_option("--scale", o->scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity, viscosity")
         ->delimiter(',');
     slump->add_option("--format", o->format, "text | json")->capture_default_str();
     slump->add_option("--out", o->out_dir, "folder for CSV, VTK and the picture (default: plots/)");

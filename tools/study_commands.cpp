@@ -96,7 +96,7 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
 void add_common(CLI::App* c, Options& o) {
     c->add_option("--scene", o.scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     c->add_option("--sf", o.sfs, "scale factors S_f of the coarse runs")->capture_default_str();
-    c->add_option("--scale", o.scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity")
+    c->add_option("--scale", o.scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity, viscosity")
         ->delimiter(',');
     c->add_option("--tol-slump", o.tol_slump, "slump tolerance, a fraction of the fill height (default: the scene's [check])");
     c->add_option("--tol-spread", o.tol_spread, "relative spread-d95 tolerance (default: the scene's [check])");

@@ -62,13 +62,13 @@ struct ContactLaw {
     DEMSCALE_HOT ContactForce force(const ContactPair& c, StateFor<Lost>& s, Lost& lost) const {
         ContactForce out;
         if (c.overlap <= 0) {  // surfaces apart: a bridge's pull at most, the springs released
-            out.on_i = (0.0 - pull_apart(c.overlap, c.wall, s, lost)) * c.normal;
+            out.on_i = (0.0 - pull_apart(c.overlap, c.v_normal, c.dt, c.wall, s, lost)) * c.normal;
             return out;
         }
         const double damping = normal.damping_force(c);
         const double elastic = normal.elastic_force(c), fn = elastic + damping;
         lost.normal_damping += -damping * c.v_normal * c.dt;
-        const double attraction = cohesion.pull(c.overlap, c.wall, s.cohesion, lost);
+        const double attraction = cohesion.pull(c.overlap, c.v_normal, c.dt, c.wall, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
         out.tangential = tangential.force(c, fn, s.tangential, lost);
         out.on_i += out.tangential;
@@ -77,12 +77,17 @@ struct ContactLaw {
         return out;
     }
 
+    // Whether pull_apart needs the normal velocity across a gap (a viscous bridge): otherwise the
+    // engine leaves it 0 and computes no velocity there.
+    bool needs_gap_velocity() const { return cohesion.needs_gap_velocity(); }
+
     // force() for surfaces apart (overlap δ ≤ 0, m), where only a bridge can act: its attraction
-    // (N, along −n on i), the springs released. It needs neither velocities nor masses, so the
-    // engine calls it directly for a bridged pair across a gap.
+    // (N, along −n on i), the springs released. It needs no masses and, unless needs_gap_velocity(),
+    // no velocity (v_normal, m/s, > 0 separating), so the engine calls it directly for a bridged
+    // pair across a gap. dt: s, for the ledger.
     template <class Lost>
-    DEMSCALE_HOT double pull_apart(double overlap, bool with_wall, StateFor<Lost>& s, Lost& lost) const {
-        const double attraction = cohesion.pull(overlap, with_wall, s.cohesion, lost);
+    DEMSCALE_HOT double pull_apart(double overlap, double v_normal, double dt, bool with_wall, StateFor<Lost>& s, Lost& lost) const {
+        const double attraction = cohesion.pull(overlap, v_normal, dt, with_wall, s.cohesion, lost);
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
         return attraction;

@@ -312,8 +312,9 @@ private:
         c.m_eff = shape.m_eff;
         c.dt = dt_;
         c.wall = wall;
-        if (c.overlap <= 0) {  // apart: only cohesion acts, and it needs the gap alone
+        if (c.overlap <= 0) {  // apart: only cohesion acts, on the gap (and a viscous bridge on v_n)
             c.v_rel = c.v_tangential = c.w_rel = Vec3::Zero();
+            if (law_.needs_gap_velocity()) c.v_normal = (p_.velocity[i] - vj).dot(c.normal);
             return c;
         }
         // Contact point at the middle of the overlap; lever arms from each centre.
@@ -345,7 +346,9 @@ private:
         // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
         // overlap and the force are computed as pair_geometry and force() compute them (same bits).
         if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0) {
-            out.force_i = (0.0 - law_.pull_apart(overlap, false, s, lost)) * (d / dist);
+            const Vec3 n = d / dist;
+            const double vn = law_.needs_gap_velocity() ? (p_.velocity[i] - p_.velocity[j]).dot(n) : 0.0;
+            out.force_i = (0.0 - law_.pull_apart(overlap, vn, dt_, false, s, lost)) * n;
             return Acts::central;
         }
         const ContactPair c =

@@ -132,7 +132,9 @@ std::string render_json(const Table& t) {
     for (const auto& row : t.rows) {
         nlohmann::ordered_json r;
         for (std::size_t c = 0; c < row.size(); ++c) {
+            // A number that does not exist ("n/a" in text) is null, so a column keeps one type.
             if (const double* x = std::get_if<double>(&row[c])) r[t.columns[c]] = *x;
+            else if (std::get<std::string>(row[c]) == not_available) r[t.columns[c]] = nullptr;
             else r[t.columns[c]] = std::get<std::string>(row[c]);
         }
         j["rows"].push_back(r);

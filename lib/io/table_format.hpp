@@ -12,6 +12,10 @@ namespace demscale::io {
 
 using Cell = std::variant<double, std::string>;
 
+// The cell of a number that does not exist (a repose angle without a flank): "n/a" in text, CSV and
+// Markdown, null in JSON.
+inline const std::string not_available = "n/a";
+
 struct Table {
     std::string title;
     std::vector<std::pair<std::string, std::string>> metadata;  // key, value

@@ -147,10 +147,10 @@ io::Table verdict_numbers(const slump::Study& study, const std::string& scene_la
         const auto& v = study.verdicts[i];
         std::vector<io::Cell> row = {v.sf, v.exponent, static_cast<double>(v.coarse_seeds)};
         for (const auto& c : v.criteria) row.push_back(100 * c.estimate), row.push_back(100 * c.interval.low), row.push_back(100 * c.interval.high);
-        double particles = 0, steps = 0;
+        double work = 0;
         const auto runs = study.coarse_ensemble(i);
-        for (const auto* r : runs) particles += double(r->particles) / double(runs.size()), steps += double(r->steps) / double(runs.size());
-        row.push_back(study.fine.particle_steps / (particles * steps));
+        for (const auto* r : runs) work += r->particle_steps() / double(runs.size());
+        row.push_back(study.fine.particle_steps / work);
         row.push_back(stats::verdict_name(v.overall));
         t.rows.push_back(std::move(row));
     }

@@ -29,7 +29,7 @@ std::string interval_pct(double estimate, const stats::Interval& i) {
 }
 
 io::Cell mean_or_na(const std::vector<double>& v) {
-    if (v.empty()) return io::Cell("n/a");
+    if (v.empty()) return io::Cell(io::not_available);
     return stats::summarize(v).mean;
 }
 
@@ -73,7 +73,7 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
                  "at_rest", "time_to_rest_s", "fill_solid_fraction", "fill_coordination", "repose_deg"};
     const double r_fine = study.reference.scene.radius_m;
     auto row = [&](const std::vector<const slump::SlumpResult*>& runs, double sf, io::Cell exponent) {
-        std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall;
+        std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall, work;
         std::size_t at_rest = 0;
         for (const auto* r : runs) {
             sh.push_back(r->slump() / r->initial_height), mm.push_back(r->slump() * 1e3), d95.push_back(r->final.spread_d95 * 1e3);
@@ -81,20 +81,22 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
             if (r->came_to_rest) ++at_rest, rest_t.push_back(r->time_to_rest());
             phi.push_back(r->fill.solid_fraction), z.push_back(r->fill.coordination);
             if (r->final.repose_angle_deg) repose.push_back(*r->final.repose_angle_deg);
-            particles.push_back(double(r->particles)), steps.push_back(double(r->steps)), wall.push_back(r->wall_s);
+            particles.push_back(double(r->particles)), steps.push_back(double(r->steps + r->pour_steps)), wall.push_back(r->wall_s);
+            work.push_back(r->particle_steps());
         }
-        const double work = stats::summarize(particles).mean * stats::summarize(steps).mean;
         const auto s = stats::summarize(sh), d = stats::summarize(d95);
         t.rows.push_back({sf, exponent, static_cast<double>(runs.size()), stats::summarize(particles).mean, stats::summarize(steps).mean,
-                          stats::summarize(wall).mean, study.fine.particle_steps / work, study.fine.wall_s / stats::summarize(wall).mean,
+                          stats::summarize(wall).mean, study.fine.particle_steps / stats::summarize(work).mean, study.fine.wall_s / stats::summarize(wall).mean,
                           s.mean, s.sd, stats::summarize(mm).mean, stats::summarize(mm).mean * 1e-3 / r_fine, d.mean, d.sd,
                           stats::summarize(prof).mean, std::to_string(at_rest) + " of " + std::to_string(runs.size()),
                           mean_or_na(rest_t), stats::summarize(phi).mean, stats::summarize(z).mean, mean_or_na(repose)});
     };
-    row(study.fine_ensemble(), 1.0, io::Cell("fine"));
+    row(study.fine_ensemble(), 1.0, io::Cell(io::not_available));
     for (std::size_t i = 0; i < study.runs.size(); ++i) row(study.coarse_ensemble(i), study.runs[i].grain.sf, study.runs[i].grain.exponent);
+    t.notes.push_back("the first row is the fine ensemble (S_f = 1, no exponent)");
     t.notes.push_back("profile_distance_pct: mean over the seeds of each run's shape distance from the fine mean shape; for the fine "
                       "ensemble, its own run-to-run scatter (the noise floor)");
+    t.notes.push_back("steps, wall_s and the speed-ups count the pour too");
     t.notes.push_back("time_to_rest_s: from the cone's removal until the pile was at rest (mean over the runs that came to rest)");
     t.notes.push_back("fill_solid_fraction: sphere volume over the cone volume below the fill's top, before the lift");
     return t;
@@ -111,18 +113,19 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
         const auto& x = r.result;
         const auto& c = r.versus_reference;
         t.rows.push_back({r.grain.sf, exponent, static_cast<double>(r.scene.seed), static_cast<double>(x.particles),
-                          static_cast<double>(x.steps), x.dt * 1e6, x.wall_s, c.wall_speedup, c.work_speedup, x.slump() * 1e3,
+                          static_cast<double>(x.steps + x.pour_steps), x.dt * 1e6, x.wall_s, c.wall_speedup, c.work_speedup, x.slump() * 1e3,
                           x.slump() / x.initial_height, 100 * c.slump_error, x.final.spread_d95 * 1e3, 100 * c.spread_error,
-                          100 * c.profile_error, x.final.repose_angle_deg ? io::Cell(*x.final.repose_angle_deg) : io::Cell("n/a"),
-                          x.came_to_rest ? io::Cell(x.time_to_rest()) : io::Cell("n/a"), remarks(r)});
+                          100 * c.profile_error, x.final.repose_angle_deg ? io::Cell(*x.final.repose_angle_deg) : io::Cell(io::not_available),
+                          x.came_to_rest ? io::Cell(x.time_to_rest()) : io::Cell(io::not_available), remarks(r)});
     };
-    add(study.reference, io::Cell("fine"));
-    for (const auto& r : study.replicas) add(r, io::Cell("fine"));
+    add(study.reference, io::Cell(io::not_available));
+    for (const auto& r : study.replicas) add(r, io::Cell(io::not_available));
     const std::size_t others = study.runs.empty() ? 0 : study.coarse_seeds.size() / study.runs.size();
     for (std::size_t i = 0; i < study.runs.size(); ++i) {
         add(study.runs[i], study.runs[i].grain.exponent);
         for (std::size_t j = 0; j < others; ++j) add(study.coarse_seeds[i * others + j], study.runs[i].grain.exponent);
     }
+    t.notes.push_back("rows with S_f = 1 and no exponent: the fine ensemble");
     t.notes.push_back("slump_error_pct_of_height: slump over the fill height minus the fine ensemble's mean, in % of the height");
     t.notes.push_back("spread and profile errors: relative to the fine ensemble's mean d95 and mean shape (fringe and empty bins do "
                       "not count; docs/slump-measures.md)");

@@ -22,7 +22,8 @@ double implied_time_exponent(double k) {
 
 // The parameters a slump scene holds physical unless told to scale them: key, and how a person says it.
 const std::pair<std::string, std::string> held_parameters[] = {
-    {"gravity", "gravitational acceleration g"}, {"youngs_modulus", "Young's modulus E"}, {"velocity", "lift speed"}};
+    {"gravity", "gravitational acceleration g"}, {"youngs_modulus", "Young's modulus E"}, {"velocity", "lift speed"},
+    {"viscosity", "liquid viscosity mu (viscous bridge)"}};
 
 }  // namespace
 

@@ -16,7 +16,7 @@ struct ExponentGroup {
 };
 
 struct HeldQuantity {
-    std::string key;          // catalogue key (gravity, youngs_modulus, velocity)
+    std::string key;          // catalogue key (gravity, youngs_modulus, velocity, viscosity)
     std::string what;         // as a person says it
     double demanded_exponent; // the implied basis demands a factor S_f^this; held at 1
 };

@@ -19,11 +19,12 @@ SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c) {
     for (const auto& key : c.scaled) {
         const auto& known = similarity::scalable_parameters();
         if (std::find(known.begin(), known.end(), key) == known.end())
-            throw InputError("--scale", key, "gravity, youngs_modulus or velocity (the lift speed)");
+            throw InputError("--scale", key, "gravity, youngs_modulus, velocity (the lift speed) or viscosity");
         const double factor = std::pow(c.sf, similarity::demanded_exponent(key, c.exponent, "--scale"));
         if (key == "gravity") s.gravity *= factor;
         if (key == "youngs_modulus") s.material.youngs_modulus *= factor;
         if (key == "velocity") s.lift_speed_m_per_s *= factor;
+        if (key == "viscosity") s.viscosity_pa_s *= factor;
     }
     s.dt_s = fine.dt_s * dem::rayleigh_time(s.material, s.radius_m) / dem::rayleigh_time(fine.material, fine.radius_m);
     if (!(2 * s.radius_m < s.top_diameter_m))

@@ -52,7 +52,7 @@ FineReference fine_reference(const std::vector<const SlumpResult*>& fine, double
         f.slump_over_height += r->slump() / r->initial_height / n;
         f.spread_d95 += r->final.spread_d95 / n;
         f.wall_s += r->wall_s / n;
-        f.particle_steps += double(r->particles) * double(r->steps) / n;
+        f.particle_steps += r->particle_steps() / n;
         f.piles.push_back(r->final);
     }
     return f;
@@ -67,7 +67,7 @@ RunComparison compare_to(const FineReference& f, const SlumpResult& run) {
         c.profile_error = shape_distance(pile_shape(run.final, f.radii, level), f.shape(level));
     }
     c.wall_speedup = run.wall_s > 0 ? f.wall_s / run.wall_s : 0;
-    const double work = double(run.particles) * double(run.steps);
+    const double work = run.particle_steps();
     c.work_speedup = work > 0 ? f.particle_steps / work : 0;
     return c;
 }

@@ -206,7 +206,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
 CohesionMikamiBridge bridge_for(const SlumpScene& s) {
     const double vhat = bridge_vhat(s);
     CohesionMikamiBridge c{bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge), s.radius_m,
-                           s.liquid.surface_tension_n_per_m, std::nullopt};
+                           s.liquid.surface_tension_n_per_m, std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
     if (s.wet_walls)
         c.wall = bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge, bridge::BridgeGeometry::sphere_wall);
     return c;
@@ -235,7 +235,11 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     // One explicit switch over the combinations a slump scene can ask for, each with or without the ledger.
     auto run = [&](auto law) {
         ProtocolState st;
-        if (pour) particles = pour_with(s, law, progress, st.pour_time, st.pour_steps);
+        if (pour) {  // its wall time counts in the run's
+            const auto t0 = std::chrono::steady_clock::now();
+            particles = pour_with(s, law, progress, st.pour_time, st.pour_steps);
+            st.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        }
         return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases, st)
                                     : run_with<false>(s, std::move(law), std::move(particles), progress, phases, st);
     };

@@ -50,6 +50,8 @@ struct SlumpResult {
     std::vector<TimePoint> history;  // at the start, then every 5 ms
     dem::Particles final_state;
     double slump() const { return initial_height - final.height; }
+    // The run's work, pour included (counted with the pile's final count: a pour holds a few % more).
+    double particle_steps() const { return double(particles) * double(steps + pour_steps); }
     // From the cone's removal to the start of the final rest window, s; NaN when not at rest.
     double time_to_rest() const { return came_to_rest ? rest_since - lift_end : std::nan(""); }
     // Change of the ledger's balance over the run relative to the energy dissipated (0 for an exact

@@ -18,7 +18,7 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
                  "rolling_model", "rolling_damping"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
-                "bridge_variant"}},
+                "bridge_variant", "viscosity_pa_s", "min_gap_ratio"}},
     {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s", "rest_duration_s",
              "rest_quantile", "skin_mm"}},
     {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
@@ -101,6 +101,10 @@ SlumpScene load_slump_scene(const std::string& path) {
         r.check("liquid.contact_angle_deg", [&] { s.liquid.contact_angle = ContactAngle(Degrees{*x}); });
     s.liquid.density_kg_per_m3 = r.checked("liquid.density_kg_per_m3", 1000, positive);
     s.liquid.moisture_content = r.checked("liquid.moisture_content", 0.045, open_interval(0, 1));
+    s.viscosity_pa_s = r.checked("liquid.viscosity_pa_s", 0, [](double x, const std::string& f) {
+        if (!(x >= 0 && x <= 1e3)) throw InputError(f, format_number(x), "[0, 1000] Pa s (water 1e-3; 0: no viscous part)");
+    });
+    s.min_gap_ratio = r.checked("liquid.min_gap_ratio", 0.01, open_interval(0, 1));
     if (auto v = r.text("liquid.bridge_variant"))
         r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
 

@@ -52,6 +52,8 @@ struct SlumpScene {
     bool wet_walls = false;  // Mikami's sphere–wall fit, unverified (2.5× the sphere–plane bound)
     similarity::Liquid liquid;
     bridge::MikamiOptions bridge;
+    double viscosity_pa_s = 0;     // the liquid's μ for the bridge's viscous part; 0: static bridge only
+    double min_gap_ratio = 0.01;   // s_min / R, the roughness gap of touching surfaces (viscous part)
     // Protocol.
     double dt_s = 1e-5;
     double gravity = 9.81;

@@ -139,7 +139,7 @@ case $case_name in
     grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts" ;;
   check_exponent_bad_input_exit_2)
     expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
-    expect 2 '--scale = viscosity' -- "$demscale" check-exponent --exponent 1 --scale viscosity --out "$work/c"
+    expect 2 '--scale = stiffness' -- "$demscale" check-exponent --exponent 1 --scale stiffness --out "$work/c"
     expect 2 '--tol-profile = -1|--tol-profile = -0.5' -- "$demscale" check-exponent --exponent 1 --tol-profile -0.5 --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" check-exponent --exponent 1 --sf 20 --out "$work/c"
     expect 2 '--seeds = 70.*1 to 64' -- "$demscale" sweep --exponents 1 --seeds 70 --out "$work/c"

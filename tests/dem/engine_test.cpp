@@ -163,6 +163,46 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     }
 }
 
+TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, across a gap and at contact, booked as lost",
+          "[dem][bridge][viscous]") {
+    const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01;
+    const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
+    const CohesionMikamiBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
+    const double rstar = r / 2;  // equal spheres
+    SECTION("the law at a fixed gap and speed, and its loss") {
+        CohesionMikamiBridge::State a, b;
+        Dissipation la, lb;
+        still.pull(0.0, 0.0, 1e-6, false, a, la), viscous.pull(0.0, 0.0, 1e-6, false, b, lb);  // contact: bridges form
+        for (double gap_hat : {0.0, 0.001, 0.05, 0.2}) {
+            const double gap = gap_hat * r, s = std::max(gap, s_min), dt = 1e-6;
+            INFO("gap " << gap_hat << " R");
+            const double f_still = still.pull(-gap, v, dt, false, a, la);
+            Dissipation step;  // this step's loss alone
+            const double f = viscous.pull(-gap, v, dt, false, b, step);
+            const double lubrication = 6 * M_PI * mu * rstar * rstar * v / s;  // Pitois et al. (2000), s << R
+            CHECK(f - f_still == Approx(lubrication).epsilon(1e-12));
+            CHECK(step.bridge == Approx(lubrication * v * dt).epsilon(1e-12));
+            CHECK(viscous.pull(-gap, -v, dt, false, b, lb) - f_still == Approx(-lubrication).epsilon(1e-12));  // approaching: pushes
+        }
+        // Beyond rupture nothing acts, viscous or not.
+        CHECK(viscous.pull(-1.01 * k.hhat_rupture * r, v, 1e-6, false, b, lb) == 0.0);
+        CHECK(viscous.pull(-0.1 * r, v, 1e-6, false, b, lb) == 0.0);  // no bridge until contact again
+    }
+    SECTION("in the engine: a bridged pair separating across a gap feels capillary plus lubrication") {
+        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+        Particles p;
+        p.add({0, 0, 0}, r, 2200);
+        p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
+        Simulation sim(p, Wet(Material{}, viscous), {}, Vec3::Zero(), 1e-6, 0.1 * r);
+        sim.particles().position[1] = Vec3(2.1 * r, 0, 0);
+        sim.particles().velocity[1] = Vec3(v, 0, 0);  // separating at v
+        sim.refresh_forces();
+        const double capillary = M_PI * r * gamma * bridge::mikami_fhat(k, 0.1);
+        CHECK(sim.particles().force[0].x() == Approx(capillary + 6 * M_PI * mu * rstar * rstar * v / (0.1 * r)).epsilon(1e-12));
+        CHECK(sim.particles().force[1].x() == Approx(-sim.particles().force[0].x()));
+    }
+}
+
 TEST_CASE("A bridge stretched far beyond the list's reach pulls until it ruptures", "[dem][bridge][neighbors]") {
     const double r = 1e-3, gamma = 0.074, vhat = 0.05544, skin = 0.01 * r;
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});

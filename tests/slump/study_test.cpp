@@ -55,7 +55,13 @@ TEST_CASE("Coarse scene: R, gamma, skin and dt scale as the algebra says, the re
     CHECK(c.lift_speed_m_per_s == Approx(fine.lift_speed_m_per_s * sf).epsilon(1e-12));
     // Rayleigh time ∝ R/√E: S_f / √(S_f²) = 1, the step the basis demands (S_T = 1).
     CHECK(c.dt_s == Approx(fine.dt_s).epsilon(1e-12));
-    CHECK_THROWS_WITH(coarse_grained(fine, {sf, 1.0, {"viscosity"}}), Catch::Matchers::Contains("--scale = viscosity"));
+    // μ ~ ρ L² T⁻¹: S_f² / S_f^t; k = 3 (t = 0) demands μ × S_f², k = 1 (t = 1) μ × S_f.
+    auto wet = fine;
+    wet.viscosity_pa_s = 1e-3;
+    CHECK(coarse_grained(wet, {sf, 3.0, {"viscosity"}}).viscosity_pa_s == Approx(1e-3 * sf * sf).epsilon(1e-12));
+    CHECK(coarse_grained(wet, {sf, 1.0, {"viscosity"}}).viscosity_pa_s == Approx(1e-3 * sf).epsilon(1e-12));
+    CHECK(coarse_grained(wet, {sf, 1.0, {}}).viscosity_pa_s == 1e-3);  // held unless named
+    CHECK_THROWS_WITH(coarse_grained(fine, {sf, 1.0, {"stiffness"}}), Catch::Matchers::Contains("--scale = stiffness"));
     CHECK_THROWS_WITH(coarse_grained(fine, {10.0, 1.0, {}}), Catch::Matchers::Contains("--sf = 10") &&
                                                                 Catch::Matchers::Contains("top opening"));
     CHECK_THROWS_AS(coarse_grained(fine, {-1.0, 1.0, {}}), InputError);
@@ -80,11 +86,12 @@ TEST_CASE("Similarity groups of an exponent: hand-derived S_f powers", "[similar
         CHECK(s.groups[0].sf_exponent == Approx(k - 1).margin(1e-14));
         CHECK(s.groups[1].sf_exponent == Approx(k - 2).margin(1e-14));
         CHECK(s.groups[5].sf_exponent == Approx(-1).margin(1e-14));
-        // Held g, E, v; the basis demands L/T² → 1 - 2t, ρL²/T² → 2 - 2t, L/T → 1 - t.
+        // Held g, E, v, μ; the basis demands L/T² → 1 - 2t, ρL²/T² → 2 - 2t, L/T → 1 - t, ρL²/T → 2 - t.
         const double t = (3 - k) / 2;
         CHECK(s.held[0].demanded_exponent == Approx(1 - 2 * t).margin(1e-14));
         CHECK(s.held[1].demanded_exponent == Approx(2 - 2 * t).margin(1e-14));
         CHECK(s.held[2].demanded_exponent == Approx(1 - t).margin(1e-14));
+        CHECK(s.held[3].demanded_exponent == Approx(2 - t).margin(1e-14));  // μ: ρ L² / T
     }
     CHECK(similarity::exponent_similarity(1).groups[0].kept());   // k = 1 keeps the stress (Eq. 11)
     CHECK(similarity::exponent_similarity(2).groups[1].kept());   // k = 2 keeps the Bond number
