@@ -1,5 +1,6 @@
 #include "report/similarity_report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -47,6 +48,8 @@ io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label)
     add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
     add("particle density", s.material.density, "kg/m^3");
     add("fill height", s.fill_height_m * 1e3, "mm");
+    t.rows.push_back({"fill", std::string(s.fill == slump::FillKind::poured ? "poured in batches, struck off level" : "hcp lattice"),
+                      std::string("-")});
     add("Young's modulus E", s.material.youngs_modulus, "Pa");
     add("Poisson's ratio", s.material.poisson_ratio, "1");
     add("restitution", s.material.restitution, "1");
@@ -58,11 +61,13 @@ io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label)
     add("moisture content (Eq. 5)", s.liquid.moisture_content, "kg/kg");
     t.rows.push_back({"bridge model", std::string(s.wet ? bridge::to_string(s.bridge.variant) : "none (dry)"), std::string("-")});
     t.rows.push_back({"bridges to the floor and cone", std::string(s.wet_walls ? "yes" : "no"), std::string("-")});
+    add("liquid viscosity (bridge's viscous part; 0: none)", s.wet ? s.viscosity_pa_s : 0.0, "Pa s");
     add("time step (fine run)", s.dt_s * 1e6, "us");
     add("gravity", s.gravity, "m/s^2");
     add("settle / spread time limits", s.settle_time_s, "s"), t.rows.back()[1] =
         format_short(s.settle_time_s) + " / " + format_short(s.spread_time_s);
-    add("at rest: every particle slower than", s.rest_speed_m_per_s, "m/s");
+    add("at rest: this share of the particles", s.rest_quantile, "1");
+    add("... slower than", s.rest_speed_m_per_s, "m/s");
     add("... for", s.rest_duration_s, "s");
     return t;
 }
@@ -94,6 +99,26 @@ io::Table bridge_at_scene(double vhat, ContactAngle theta) {
     t.notes.push_back("F^ = F/(2 pi R gamma) for every model (Eq. 1 as printed uses 2 pi R gamma; Mikami's own form pi R gamma)");
     t.notes.push_back("gaps as fractions 0 ... 0.95 of the exact rupture distance h^_c = " + format_short(rupture));
     return t;
+}
+
+// "k = 1: PASS at S_f = 1.4; INCONCLUSIVE at S_f = 1.96; FAIL at S_f = 2.74, 3.84. k = 3: ..."
+std::string verdicts_by_exponent(const slump::Study& study) {
+    std::vector<double> ks;
+    for (const auto& v : study.verdicts)
+        if (std::find(ks.begin(), ks.end(), v.exponent) == ks.end()) ks.push_back(v.exponent);
+    std::string text;
+    for (double k : ks) {
+        text += "k = " + format_short(k) + ":";
+        std::string sep = " ";
+        for (auto outcome : {stats::Verdict::pass, stats::Verdict::inconclusive, stats::Verdict::fail}) {
+            std::string sfs;
+            for (const auto& v : study.verdicts)
+                if (v.exponent == k && v.overall == outcome) sfs += (sfs.empty() ? "" : ", ") + format_short(v.sf);
+            if (!sfs.empty()) text += sep + stats::verdict_name(outcome) + " at S_f = " + sfs, sep = "; ";
+        }
+        text += ". ";
+    }
+    return text;
 }
 
 std::string verdict_text(const slump::Study& study, const std::vector<double>& sfs) {
@@ -245,9 +270,9 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, o.scale_factors)});
         slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
         verdict_section.blocks.push_back(Paragraph{
-            "Overall: " + stats::verdict_name(study.overall()) + ". Each coarse ensemble (S_f, k) is compared with the fine ensemble, " +
-            std::to_string(plan.seeds) + " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies "
-            "inside the tolerance, FAIL where it lies wholly outside, INCONCLUSIVE otherwise."});
+            "Each coarse ensemble (S_f, k) is compared with the fine ensemble, " + std::to_string(plan.seeds) +
+            " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies inside the tolerance, FAIL "
+            "where it lies wholly outside, INCONCLUSIVE otherwise (docs/verdicts.md). " + verdicts_by_exponent(study)});
         verdict_section.blocks.push_back(TableBlock{verdict_table(study, o.scene_label)});
         // Caveats per ensemble, not per run: how many runs did not come to rest, which geometry limits apply.
         auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {

@@ -46,7 +46,7 @@ std::string profiles_script(const std::string& stem, const slump::Study& study, 
                 std::to_string(std::min<std::size_t>(ks.size(), 3) * 560 + 40) + "," +
                     std::to_string(((ks.size() + 2) / 3) * 440 + 40))
       << "set multiplot layout " << (ks.size() + 2) / 3 << "," << std::min<std::size_t>(ks.size(), 3) << " title \"Final pile profiles, "
-      << label << "\" font ',13'\n"
+      << label << "\\n{/*0.85 fine: every seed; coarse: the first seed of each ensemble}\" font ',13'\n"
       << "set xlabel 'radius from the pile axis (mm)'\nset ylabel 'height h(r) (mm)'\nset yrange [0:*]\nset xrange [0:*]\n";
     for (double k : ks) {
         s << "set title 'γ̄ = γ S_f^{" << format_number(k) << "}'\nplot \\\n"
@@ -80,10 +80,11 @@ std::string error_script(const std::string& stem, const std::vector<double>& sfs
     const auto& n = study.noise;
     const auto& tol = study.tolerances;
     std::ostringstream s;
-    s << header(csv, "ensemble differences against the exponent k, with 95 % intervals", stem + "_error_vs_k.png", "1500,480")
+    s << header(csv, "ensemble differences against the exponent k, with 95 % intervals", stem + "_error_vs_k.png", "1500,540")
       << "set multiplot layout 1,3 title \"Coarse ensembles against the fine ensemble, " << label
       << "\\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd)}\" font ',13'\n"
-      << "set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'\nset offsets graph 0.05, graph 0.05, 0, 0\n";
+      << "set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'\nset offsets graph 0.05, graph 0.05, 0, 0\n"
+      << "set key below horizontal box\n";  // an opaque key inside would hide the band and the lines
     struct Panel {
         const char* col;
         const char* ylabel;
