@@ -82,7 +82,9 @@ tbody tr:nth-child(even){background:#fafafa}figure{margin:1.2em 0}figcaption{fon
 figure.plot figcaption{font-weight:normal;font-style:italic;margin-top:.3em}.scroll{overflow-x:auto}
 ul.meta{font-size:.85em;color:#444;margin:.2em 0 .5em}p.note{font-size:.85em;color:#555;margin:.2em 0}
 img{max-width:100%;border:1px solid #e0e0e0}td.long{min-width:24em}
-figure.half{display:inline-block;width:49%;margin:.5em 0;vertical-align:top}figure.half figcaption{font-size:.85em})";
+figure.half{display:inline-block;width:49%;margin:.5em 0;vertical-align:top}figure.half figcaption{font-size:.85em}
+@media print{body{max-width:none;margin:0;padding:0}.scroll{overflow:visible}table{font-size:6.5pt;width:100%}
+th,td{padding:.1em .25em}th{overflow-wrap:anywhere}td.num{white-space:normal}td.long{min-width:0}figure,tr{break-inside:avoid}})";
 
 }  // namespace
 

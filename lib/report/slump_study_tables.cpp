@@ -1,5 +1,6 @@
 #include "report/slump_study_tables.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.hpp"
@@ -38,8 +39,11 @@ io::Cell mean_or_na(const std::vector<double>& v) {
 io::Table verdict_table(const slump::Study& study, const std::string& scene_label) {
     io::Table t;
     t.title = "Verdict per scale factor and exponent: coarse ensemble against the fine ensemble (" + scene_label + ")";
-    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)},
-                  {"overall", stats::verdict_name(study.overall())}};
+    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)}};
+    // One verdict over all rows means something for one candidate k (check-exponent), not across several.
+    const bool one_exponent = std::all_of(study.verdicts.begin(), study.verdicts.end(),
+                                          [&](const auto& v) { return v.exponent == study.verdicts.front().exponent; });
+    if (one_exponent) t.metadata.push_back({"overall", stats::verdict_name(study.overall())});
     t.columns = {"sf", "exponent", "seeds", "slump_diff_pct_of_height", "spread_diff_pct", "profile_distance_pct", "verdict",
                  "smallest_tolerances_pct", "notes"};
     for (const auto& v : study.verdicts) {

@@ -3,39 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <unordered_map>
 #include <vector>
 
+#include "dem/sphere_grid.hpp"
+
 namespace demscale::slump {
-
-namespace {
-
-// Sphere indices binned in cubes of one diameter.
-class Cells {
-public:
-    Cells(const dem::Particles& p, double cell) : p_(p), cell_(cell) {
-        for (std::size_t i = 0; i < p.size(); ++i) cells_[key(p.position[i], 0, 0, 0)].push_back(i);
-    }
-    template <class Visit>
-    void near(const dem::Vec3& x, Visit visit) const {
-        for (int i = -1; i <= 1; ++i)
-            for (int j = -1; j <= 1; ++j)
-                for (int k = -1; k <= 1; ++k)
-                    if (const auto it = cells_.find(key(x, i, j, k)); it != cells_.end())
-                        for (std::size_t n : it->second) visit(n);
-    }
-
-private:
-    long long key(const dem::Vec3& x, int i, int j, int k) const {
-        auto c = [&](double v, int d) { return static_cast<long long>(std::floor(v / cell_)) + d + (1 << 20); };
-        return (c(x.x(), i) << 42) | (c(x.y(), j) << 21) | c(x.z(), k);
-    }
-    const dem::Particles& p_;
-    double cell_;
-    std::unordered_map<long long, std::vector<std::size_t>> cells_;
-};
-
-}  // namespace
 
 FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
     if (all.mobile_count() != all.size()) return measure_fill(all.mobile(), s);
@@ -47,10 +19,11 @@ FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
     for (std::size_t i = 0; i < n; ++i) m.top = std::max(m.top, all.position[i].z() + all.radius[i]), solid += 4.0 / 3.0 * M_PI * std::pow(all.radius[i], 3);
     m.solid_fraction = solid / cone_volume_below(s, std::min(m.top, s.height_m));
 
-    const Cells cells(all, 2 * r);
+    dem::SphereGrid cells(2 * r);
+    for (const auto& x : all.position) cells.add(x);
     std::size_t contacts = 0;
     for (std::size_t i = 0; i < n; ++i)
-        cells.near(all.position[i], [&](std::size_t j) {
+        cells.near(all.position[i], [&](std::size_t j, const dem::Vec3&) {
             if (j <= i) return;
             const double overlap = all.radius[i] + all.radius[j] - (all.position[i] - all.position[j]).norm();
             if (overlap >= 0) ++contacts, m.max_overlap = std::max(m.max_overlap, overlap / r);
@@ -71,7 +44,7 @@ FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
             const double at = cone_radius_at(s, q.z()) - 2 * r;
             if (q.x() * q.x() + q.y() * q.y() > at * at) continue;
             bool covered = false;
-            cells.near(q, [&](std::size_t j) { covered = covered || (q - all.position[j]).squaredNorm() < all.radius[j] * all.radius[j]; });
+            cells.near(q, [&](std::size_t j, const dem::Vec3& x) { covered = covered || (q - x).squaredNorm() < all.radius[j] * all.radius[j]; });
             ++m.core_points, inside += covered;
         }
     }

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
-#include <unordered_map>
+
+#include "dem/sphere_grid.hpp"
 
 namespace demscale::slump {
 
@@ -26,32 +27,6 @@ double pile_top(const SlumpScene& s, const dem::Particles& pile) {
 double reach_at(const SlumpScene& s, double z) {
     return std::min(cone_radius_at(s, std::min(z, s.height_m)), cone_radius_at(s, s.height_m)) - 1.05 * s.radius_m;
 }
-
-// Spheres binned in cubes of one diameter: an overlap test looks at 27 cells.
-class Grid {
-public:
-    explicit Grid(double cell) : cell_(cell) {}
-    void add(const dem::Vec3& x) { cells_[key(x, 0, 0, 0)].push_back(x); }
-    bool overlaps(const dem::Vec3& x, double distance) const {
-        for (int i = -1; i <= 1; ++i)
-            for (int j = -1; j <= 1; ++j)
-                for (int k = -1; k <= 1; ++k) {
-                    const auto it = cells_.find(key(x, i, j, k));
-                    if (it == cells_.end()) continue;
-                    for (const auto& y : it->second)
-                        if ((x - y).squaredNorm() < distance * distance) return true;
-                }
-        return false;
-    }
-
-private:
-    long long key(const dem::Vec3& x, int i, int j, int k) const {
-        auto c = [&](double v, int d) { return static_cast<long long>(std::floor(v / cell_)) + d + (1 << 20); };
-        return (c(x.x(), i) << 42) | (c(x.y(), j) << 21) | c(x.z(), k);
-    }
-    double cell_;
-    std::unordered_map<long long, std::vector<dem::Vec3>> cells_;
-};
 
 }  // namespace
 
@@ -83,7 +58,7 @@ dem::Particles insert_batch(const SlumpScene& s, const dem::Particles& pile, std
     const double r = s.radius_m, gap = 2.02 * r;  // 1 % of R clear of every neighbour
     std::mt19937_64 rng((static_cast<std::uint64_t>(s.seed) << 32) ^ (0x9e3779b9ull * (stream + 1)));
     std::uniform_real_distribution<double> unit(0, 1);
-    Grid grid(gap);
+    dem::SphereGrid grid(gap);
     for (std::size_t i = 0; i < pile.size(); ++i) grid.add(pile.position[i]);
     dem::Particles batch;
     // Slabs one diameter thick, upward from the pile's top, each filled to the insertion fraction.
@@ -98,7 +73,7 @@ dem::Particles insert_batch(const SlumpScene& s, const dem::Particles& pile, std
         for (std::size_t placed = 0, tries = 0; placed < want && tries < 200 * want; ++tries) {
             const double rho = reach * std::sqrt(unit(rng)), phi = 2 * M_PI * unit(rng);
             const dem::Vec3 x(rho * std::cos(phi), rho * std::sin(phi), lo + (hi - lo) * unit(rng));
-            if (grid.overlaps(x, gap)) continue;
+            if (grid.any_within(x, gap)) continue;
             grid.add(x);
             batch.add(x, r, s.material.density);
             ++placed;
