@@ -11,7 +11,7 @@ double rupture_hhat(double vhat, ContactAngle theta, RuptureLaw law) {
     require_positive(vhat, "vhat");
     const double t = theta.radians();
     switch (law) {
-        case RuptureLaw::mikami1998:  // Mikami et al. 1998 (via physics.md §1)
+        case RuptureLaw::mikami1998:  // Mikami et al. 1998 (via docs/model.md §1)
             return (0.62 * t + 0.99) * std::pow(vhat, 0.34);
         case RuptureLaw::lian1993:  // Lian, Thornton & Adams 1993
             return (1.0 + 0.5 * t) * std::cbrt(vhat);
@@ -36,13 +36,13 @@ MikamiCoefficients mikami_coefficients(double vhat, ContactAngle theta, const Mi
         k.c = c_slope * lnv + 0.078;                                  // Eq. 8 (0.042 printed)
         k.hhat_rupture = rupture_hhat(vhat, theta, options.rupture);
     } else {
-        // Mikami 1998 sphere–wall fit (physics.md §1; coefficients from a secondary source).
+        // Mikami 1998 sphere–wall fit (docs/model.md §1; coefficients from a secondary source).
         k.a = -1.9 * std::pow(vhat, -0.51);
         k.b = (-0.016 * lnv - 0.76) * t2 - 0.12 * lnv + 1.2;
         k.c = 0.013 * lnv + 0.18;
         k.hhat_rupture = (0.22 * theta.radians() + 0.95) * std::pow(vhat, 0.32);
     }
-    // Eq. 1 as printed uses 2πRγ; Mikami's coefficients imply πRγ (physics.md §2).
+    // Eq. 1 as printed uses 2πRγ; Mikami's coefficients imply πRγ (docs/model.md §2).
     k.force_scale = options.variant == MikamiVariant::mikami1998 ? std::numbers::pi : 2.0 * std::numbers::pi;
     return k;
 }

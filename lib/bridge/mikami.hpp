@@ -1,8 +1,8 @@
 // Static pendular liquid bridge: Mikami, Kamiya & Horio (1998) regression of Young–Laplace
 // solutions, as printed in Yun & Park (2017) Eqs. 1–8 (sphere–sphere) and Mikami's
-// sphere–wall fit (physics.md §1). Units: SI; ĥ = full surface gap / R, V̂ = V / R³, θ in radians.
+// sphere–wall fit (docs/model.md §1). Units: SI; ĥ = full surface gap / R, V̂ = V / R³, θ in radians.
 //
-// Policy at the edges (physics.md §7):
+// Policy at the edges (docs/model.md §7):
 //  * ĥ < 0 (overlap) uses the contact value ĥ = 0.
 //  * ĥ > ĥ_rupture: no bridge, force exactly 0.
 //  * Where the fit turns negative before rupture (C < 0 and exp(Aĥ+B) < −C: the printed

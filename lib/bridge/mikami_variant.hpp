@@ -1,5 +1,5 @@
 // Named choices for the Mikami et al. (1998) liquid-bridge regression: which printed form,
-// which rupture law, and which geometry (sphere–sphere or sphere–wall). See physics.md §2.
+// which rupture law, and which geometry (sphere–sphere or sphere–wall). See docs/model.md §2.
 #pragma once
 
 #include <string>
@@ -8,7 +8,7 @@
 namespace demscale::bridge {
 
 // mikami1998:    F = πRγ·F̂, C = 0.0042·ln V̂ + 0.078 — as in public implementations; stays below
-//                the physical bound 2πRγ·cos θ (physics.md §2). The default.
+//                the physical bound 2πRγ·cos θ (docs/model.md §2). The default.
 // yun_park_2017: F = 2πRγ·F̂ (paper Eq. 1), C = 0.042·ln V̂ + 0.078 (paper Eq. 8) — exactly as printed.
 enum class MikamiVariant { mikami1998, yun_park_2017 };
 

@@ -1,6 +1,6 @@
 // Where the Mikami regression can be trusted, and what to tell the user when it cannot.
 // Mikami et al. (1998) state their fitted range in the original paper, which we could not consult;
-// we use the range commonly quoted for this class of fits, V̂ ∈ [1e-5, 0.1], θ ≤ 40° (physics.md §2),
+// we use the range commonly quoted for this class of fits, V̂ ∈ [1e-5, 0.1], θ ≤ 40° (docs/model.md §2),
 // and add the physical checks we can make ourselves.
 #pragma once
 
@@ -25,7 +25,7 @@ struct ValidityWarning {
 
 // Warnings for evaluating the regression at (V̂, θ) with these coefficients:
 //  vhat_below_range / vhat_above_range / theta_above_range — outside the fitted range;
-//  theta_trend_unphysical — θ > 0 with V̂ < 0.06, where the fit's force grows with θ (physics.md §2);
+//  theta_trend_unphysical — θ > 0 with V̂ < 0.06, where the fit's force grows with θ (docs/model.md §2);
 //  negative_before_rupture — the fit turns negative before rupture and is clamped to 0;
 //  above_physical_bound — F at contact exceeds 2πRγ·cos θ (sphere–sphere) or 4πRγ·cos θ (sphere–wall),
 //                         the small-volume limit the force cannot exceed.

@@ -1,6 +1,6 @@
 // Liquid–solid contact angle θ. Stored in radians (SI inside); built only from an explicit
 // Radians{} or Degrees{} so a bare number in the wrong unit cannot reach the physics
-// (θ = 40 read as radians makes Mikami's exp(B) overflow: physics.md §7.5).
+// (θ = 40 read as radians makes Mikami's exp(B) overflow: docs/model.md).
 #pragma once
 
 #include <numbers>

@@ -1,5 +1,5 @@
 // Critical time steps of a scene. Rayleigh time T_R = π R √(ρ/G) / (0.1631 ν + 0.8766) (EDEM docs,
-// physics.md §6) and the Hertz contact duration T_H = 2.87 (m*² / (R* E*² v))^(1/5) (elastic impact
+// docs/model.md §6) and the Hertz contact duration T_H = 2.87 (m*² / (R* E*² v))^(1/5) (elastic impact
 // at speed v; Johnson 1985). demscale takes dt ≤ 0.2 T_R as safe. SI units.
 #pragma once
 

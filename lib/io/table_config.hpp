@@ -13,7 +13,7 @@
 namespace demscale::io {
 
 // Which mass feeds Eq. 5: a solid density (so m̄ = m·S_f³ exactly, the replacement concept),
-// or the table's rounded masses (V̂ then varies with R, physics.md §1).
+// or the table's rounded masses (V̂ then varies with R, docs/model.md §1).
 enum class MassSource { density, table };
 
 struct TableConfig {

@@ -1,5 +1,5 @@
 // Every quantity a DEM scene uses, with its SI unit and its dimension in the (L, ρ, T) basis.
-// Mass = ρL³, force = ρL⁴T⁻², stress = ρL²T⁻², etc. (Feng & Owen 2014; physics.md §4).
+// Mass = ρL³, force = ρL⁴T⁻², stress = ρL²T⁻², etc. (Feng & Owen 2014; docs/model.md §4).
 #pragma once
 
 #include <optional>

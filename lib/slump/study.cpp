@@ -176,7 +176,7 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
     for (const auto* r : all) reach = std::max(reach, r->result.final.spread_max);
     study.fine = fine_reference(study.fine_ensemble(), plan.fine.radius_m, reach);
     study.noise = noise_floor(study.fine_ensemble(), study.fine);
-    for (auto* r : all) r->versus_reference = compare_to(study.fine, r->result), study.run_wall_s += r->result.wall_s;
+    for (auto* r : all) r->versus_reference = compare_to(study.fine, r->result);
     for (std::size_t i = 0; i < study.runs.size(); ++i)
         study.verdicts.push_back(judge_ensemble(study.fine_ensemble(), study.coarse_ensemble(i), study.runs[i].grain.sf,
                                                 study.runs[i].grain.exponent, study.tolerances, plan.fine.radius_m, plan.fine.wet));

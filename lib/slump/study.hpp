@@ -50,7 +50,6 @@ struct Study {
     NoiseFloor noise;                   // the fine ensemble's own spread
     Tolerances tolerances;
     double wall_s = 0;                  // this call's wall time (cached runs cost nothing)
-    double run_wall_s = 0;              // the runs' own wall times added up, cached ones included
     stats::Verdict overall() const;     // FAIL if any ensemble fails, else INCONCLUSIVE if any is, else PASS
     std::vector<const SlumpResult*> fine_ensemble() const;
     std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds

@@ -1,5 +1,5 @@
 // Mikami regression (Yun & Park 2017 Eqs. 1-8) against hand derivations and the independently
-// verified values in physics.md §1 (computed there with a separate Young–Laplace/regression code).
+// verified values in docs/model.md §1 (computed there with a separate Young–Laplace/regression code).
 #include <catch2/catch.hpp>
 #include <cfloat>
 #include <cmath>
@@ -39,8 +39,8 @@ TEST_CASE("Table 1 bridge coefficients at V^ = 0.05544, theta = 0 match a hand d
     CHECK(mikami_coefficients(0.05544, zero, printed).force_scale == Approx(2 * M_PI));
 }
 
-TEST_CASE("F^ along the gap matches physics.md's independently computed values", "[bridge][mikami]") {
-    // physics.md §1 [V]: raw F^ at h^ = 0, 0.01, 0.05, 0.1, 0.2 (3 decimals).
+TEST_CASE("F^ along the gap matches docs/model.md's independently computed values", "[bridge][mikami]") {
+    // docs/model.md §1 [V]: raw F^ at h^ = 0, 0.01, 0.05, 0.1, 0.2 (3 decimals).
     const double hs[] = {0, 0.01, 0.05, 0.1, 0.2};
     const double c0042[] = {1.773, 1.688, 1.389, 1.092, 0.682};
     const double c042[] = {1.664, 1.579, 1.280, 0.982, 0.573};
@@ -53,7 +53,7 @@ TEST_CASE("F^ along the gap matches physics.md's independently computed values",
 }
 
 TEST_CASE("Capillary force in newtons for R = 1 mm water bridge", "[bridge][mikami]") {
-    // physics.md §1: 2 pi R gamma * 1.773 = 0.824 mN; Mikami's pi R gamma gives half, 0.412 mN.
+    // docs/model.md §1: 2 pi R gamma * 1.773 = 0.824 mN; Mikami's pi R gamma gives half, 0.412 mN.
     // Printed variant: 2 pi * 1e-3 * 0.074 * 1.664 = 0.7737 mN.
     const auto kp = mikami_coefficients(0.05544, zero, published);
     const auto kq = mikami_coefficients(0.05544, zero, printed);
@@ -91,7 +91,7 @@ TEST_CASE("Beyond rupture there is no bridge, below it there is, overlap uses co
 }
 
 TEST_CASE("Printed variant turns negative before rupture at small V^: clamped to 0 and flagged", "[bridge][hard]") {
-    // physics.md §7.1: V^ = 1e-5, C = 0.042 ln 1e-5 + 0.078 = -0.40554; raw = -0.32 at h^ = 0.3 h^_c with
+    // docs/model.md: V^ = 1e-5, C = 0.042 ln 1e-5 + 0.078 = -0.40554; raw = -0.32 at h^ = 0.3 h^_c with
     // Lian's h^_c = 1e-5^(1/3) = 0.021544: exp(-490.27 * 0.0064633 + 0.69874) - 0.40554 = -0.32155.
     const MikamiOptions printed_lian{MikamiVariant::yun_park_2017, RuptureLaw::lian1993};
     const auto k = mikami_coefficients(1e-5, zero, printed_lian);
@@ -141,7 +141,7 @@ TEST_CASE("Sphere-wall coefficients (Mikami 1998, secondary source) and their bo
     CHECK(k.hhat_rupture == Approx(0.376484).epsilon(1e-5));
     // The sphere-plane small-volume limit is 4 pi R gamma cos(theta). These coefficients give
     // F/(pi R gamma) = exp(1.2 + 0.12*9.2103) + 0.013*(-9.2103) + 0.18 = 10.087 at V^ = 1e-4:
-    // 2.5x the bound. The check must say so (physics.md lists them as unverified).
+    // 2.5x the bound. The check must say so (docs/model.md lists them as unverified).
     const auto kw = mikami_coefficients(1e-4, zero, published, BridgeGeometry::sphere_wall);
     CHECK(f_over_pi_r_gamma(kw, mikami_fhat(kw, 0)) == Approx(10.087).margin(1e-3));
     CHECK(has_code(check_validity(1e-4, zero, kw), "above_physical_bound"));

@@ -39,7 +39,7 @@ TEST_CASE("Exact bridge: volume and gap equal the request, checked by an indepen
 }
 
 TEST_CASE("Exact bridge: small-volume limit F/(2 pi R gamma) -> cos(theta) at contact, from below", "[bridge][exact]") {
-    // As V^ -> 0 the bridge at contact pulls with 2 pi R gamma cos(theta) (Fisher 1926; physics.md §3: 0.9937 at 1e-7).
+    // As V^ -> 0 the bridge at contact pulls with 2 pi R gamma cos(theta) (Fisher 1926; docs/model.md §3: 0.9937 at 1e-7).
     for (double deg : {0.0, 30.0, 60.0}) {
         const ContactAngle theta{Degrees{deg}};
         double previous = 0;
@@ -56,14 +56,14 @@ TEST_CASE("Exact bridge: small-volume limit F/(2 pi R gamma) -> cos(theta) at co
 }
 
 TEST_CASE("Exact bridge: published value at V^ = 1e-4, theta = 0, contact", "[bridge][exact]") {
-    // physics.md §2 [V]: exact F/(pi R gamma) = 1.929 (independent Young-Laplace implementation).
+    // docs/model.md §2 [V]: exact F/(pi R gamma) = 1.929 (independent Young-Laplace implementation).
     const auto r = solve_young_laplace(1e-4, zero, 0.0);
     REQUIRE(r.ok());
     CHECK(2 * r.shape.fhat_neck == Approx(1.929).margin(0.0006));
 }
 
 TEST_CASE("Exact bridge against the toroidal approximation in its limit (small V^, contact)", "[bridge][exact][toroidal]") {
-    // Toroidal (Lian et al. 1993) is exact as V^ -> 0 and under-predicts slightly (physics.md §3: -6 ... -0.5 %).
+    // Toroidal (Lian et al. 1993) is exact as V^ -> 0 and under-predicts slightly (docs/model.md §3: -6 ... -0.5 %).
     const double exact_small = solve_young_laplace(1e-5, zero, 0.0).shape.fhat_neck;
     CHECK(toroidal_bridge(1e-5, zero, 0.0).fhat / exact_small - 1 == Approx(0).margin(0.01));
     const double exact_mid = solve_young_laplace(0.05544, zero, 0.0).shape.fhat_neck;

@@ -146,8 +146,8 @@ TEST_CASE("A fixed sphere never moves, others bounce off it with the law's resti
     }
 }
 
-TEST_CASE("Time-step criteria: Rayleigh time of physics.md and refusal of a too large step", "[dem][timestep]") {
-    // physics.md §6 [V]: R = 1 mm, rho = 2500, E = 1e8 Pa, nu = 0.22 -> T_R = 27 us; E = 1e7 -> 86 us.
+TEST_CASE("Time-step criteria: Rayleigh time of docs/model.md and refusal of a too large step", "[dem][timestep]") {
+    // docs/model.md §6 [V]: R = 1 mm, rho = 2500, E = 1e8 Pa, nu = 0.22 -> T_R = 27 us; E = 1e7 -> 86 us.
     Material m;
     m.density = 2500;
     m.poisson_ratio = 0.22;

@@ -150,7 +150,7 @@ TEST_CASE("Energy ledger balances for a dry column collapsing from a lifted tube
 
 TEST_CASE("Energy ledger balances for a wet column collapsing from a lifted tube", "[dem][energy][bridge][slow]") {
     using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
-    const double vhat = 0.05544;  // Eq. 5 at 4.5 % moisture (physics.md)
+    const double vhat = 0.05544;  // Eq. 5 at 4.5 % moisture (docs/model.md)
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
     const auto wall = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
     check_ledger(Law(material(0.5, 0.1), CohesionMikamiBridge{k, r, 0.074, wall}), "wet");

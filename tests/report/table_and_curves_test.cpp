@@ -16,7 +16,7 @@ io::TableConfig shipped() { return io::load_table_config(DEMSCALE_SOURCE_DIR "/d
 }  // namespace
 
 TEST_CASE("Density implied by Table 1's masses", "[report][density]") {
-    // physics.md §1 [V]: least squares 2.195 g/cm^3; every rounded mass consistent for rho in [2.175, 2.214].
+    // docs/model.md §1 [V]: least squares 2.195 g/cm^3; every rounded mass consistent for rho in [2.175, 2.214].
     const auto c = shipped();
     const auto fit = report::fit_density(c.radii_m, c.tabulated_masses_kg, c.mass_resolution_kg);
     CHECK(fit.least_squares_kg_per_m3 == Approx(2195).margin(1));
@@ -66,7 +66,7 @@ TEST_CASE("With the printed rounded masses V^ varies and the Fig. 3 curves no lo
     auto c = shipped();
     c.mass_source = io::MassSource::table;
     const auto p = report::table1_particles(c);
-    CHECK(p.rows[3].vhat == Approx(0.06591).epsilon(1e-3));  // R = 1.40 mm, physics.md §1
+    CHECK(p.rows[3].vhat == Approx(0.06591).epsilon(1e-3));  // R = 1.40 mm, docs/model.md §1
     for (const auto& x : report::measure_collapse(report::compute_curves(c, report::Figure::force, {}), report::Figure::force))
         CHECK(x.max_relative_spread > 0.01);
 }

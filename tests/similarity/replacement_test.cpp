@@ -21,7 +21,7 @@ const double table1_sf[] = {1.0, 1.40, 1.96, 2.74, 3.84};
 
 TEST_CASE("Replacement leaves V^ invariant: proved for every S_f against the closed form", "[similarity][replacement]") {
     // V^ = V_liq / R^3 = phi (m / rho_l)(1 - sqrt(3/4)) / R^3 = phi (rho_s / rho_l)(4 pi / 3)(1 - sqrt(3/4)),
-    // independent of R: 0.045 * 2.19517 * 4.18879 * 0.1339746 = 0.0554363 (physics.md: 0.05544).
+    // independent of R: 0.045 * 2.19517 * 4.18879 * 0.1339746 = 0.0554363 (docs/model.md: 0.05544).
     const double closed = 0.045 * (rho_s / 1000.0) * 4.0 / 3.0 * std::numbers::pi * (1 - std::sqrt(0.75));
     CHECK(closed == Approx(0.05544).epsilon(1e-3));
     for (double sf : {1.0, 1.4, 1.96, 2.74, 3.84, 10.0, 1e3}) {
@@ -38,7 +38,7 @@ TEST_CASE("Replacement leaves V^ invariant: proved for every S_f against the clo
 }
 
 TEST_CASE("Rounded Table 1 masses break the invariance (why the default uses a density)", "[similarity][replacement]") {
-    // R = 1.40 mm printed as 0.03 g: V^ = 0.045 * 3e-8 * 0.1339746 / (1.4e-3)^3 = 0.065913 (physics.md: 0.06591).
+    // R = 1.40 mm printed as 0.03 g: V^ = 0.045 * 3e-8 * 0.1339746 / (1.4e-3)^3 = 0.065913 (docs/model.md: 0.06591).
     const auto p = describe_particle(1.4, 1.4e-3, 3e-5, water);
     CHECK(p.vhat == Approx(0.065913).epsilon(1e-4));
 }
@@ -67,8 +67,8 @@ TEST_CASE("Stress similarity: sigma independent of S_f exactly when k = 1, propo
     }
 }
 
-TEST_CASE("Contact stresses of physics.md §1 (independent computation)", "[similarity][stress]") {
-    // physics.md: 2 pi R gamma normalisation, C = 0.0042: k = 1 -> 262.4 Pa at every S_f; k = 3 -> 1008 / 1970 / 3870 Pa
+TEST_CASE("Contact stresses of docs/model.md §1 (independent computation)", "[similarity][stress]") {
+    // docs/model.md: 2 pi R gamma normalisation, C = 0.0042: k = 1 -> 262.4 Pa at every S_f; k = 3 -> 1008 / 1970 / 3870 Pa
     // at S_f = 1.96 / 2.74 / 3.84. Mikami's pi R gamma gives exactly half of each.
     const auto fine = replace_particle(1e-3, rho_s, 1.0, water);
     const auto k = bridge::mikami_coefficients(fine.vhat, water.contact_angle);

@@ -1,5 +1,5 @@
 // Similarity algebra against dimensional analysis done by hand and the scale-factor table of
-// physics.md §4 (Feng & Owen 2014 basis L, rho, T).
+// docs/model.md §4 (Feng & Owen 2014 basis L, rho, T).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -29,7 +29,7 @@ TEST_CASE("Catalogue dimensions equal those derived from SI units by hand", "[si
     }
 }
 
-TEST_CASE("Scale factors of physics.md §4 for the two classic bases", "[similarity][basis]") {
+TEST_CASE("Scale factors of docs/model.md §4 for the two classic bases", "[similarity][basis]") {
     const double s = 2.74;
     // Gravity kept: S_rho = 1, S_T = S_L^(1/2). Velocity kept: S_rho = 1, S_T = S_L.
     const std::map<std::string, std::pair<double, double>> exponent_of_sl = {
