@@ -13,7 +13,7 @@ set offsets graph 0.05, graph 0.05, 0, 0
 set key below horizontal box
 set ylabel 'slump difference (% of fill height)'
 plot \
-  -1.355085263156342 with filledcurves y1=1.355085263156342 fc rgb '#e6e6e6' title 'fine noise', \
+  -0.6938144301905416 with filledcurves y1=0.6938144301905416 fc rgb '#e6e6e6' title 'fine noise', \
   5 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
   -5 with lines lc rgb '#aa0000' dt 2 notitle, \
   'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
@@ -22,7 +22,7 @@ plot \
   'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 4 pt 8 title 'S_f = 3.84'
 set ylabel 'spread d95 difference (%)'
 plot \
-  -0.8951249148100403 with filledcurves y1=0.8951249148100403 fc rgb '#e6e6e6' title 'fine noise', \
+  -0.7888686445644905 with filledcurves y1=0.7888686445644905 fc rgb '#e6e6e6' title 'fine noise', \
   5 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
   -5 with lines lc rgb '#aa0000' dt 2 notitle, \
   'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
@@ -31,7 +31,7 @@ plot \
   'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 4 pt 8 title 'S_f = 3.84'
 set ylabel 'profile distance (%)'
 plot \
-  0*6.2204619976320625 with filledcurves y1=6.2204619976320625 fc rgb '#e6e6e6' title 'fine noise', \
+  0*7.435339112306226 with filledcurves y1=7.435339112306226 fc rgb '#e6e6e6' title 'fine noise', \
   20 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
   'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
   'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.96', \

@@ -61,8 +61,12 @@ struct ContactLaw {
     template <class Lost>
     DEMSCALE_HOT ContactForce force(const ContactPair& c, StateFor<Lost>& s, Lost& lost) const {
         ContactForce out;
-        if (c.overlap <= 0) {  // surfaces apart: a bridge's pull at most, the springs released
+        if (c.overlap <= 0) {  // surfaces apart: a bridge's pull (and drag) at most, the springs released
             out.on_i = (0.0 - pull_apart(c.overlap, c.v_normal, c.dt, c.wall, s, lost)) * c.normal;
+            if (needs_gap_velocity()) {
+                out.tangential = cohesion.drag(c.overlap, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
+                out.on_i += out.tangential;
+            }
             return out;
         }
         const double damping = normal.damping_force(c);
@@ -71,14 +75,16 @@ struct ContactLaw {
         const double attraction = cohesion.pull(c.overlap, c.v_normal, c.dt, c.wall, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
         out.tangential = tangential.force(c, fn, s.tangential, lost);
+        if (needs_gap_velocity()) out.tangential += cohesion.drag(c.overlap, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
         out.on_i += out.tangential;
         // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
         out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
         return out;
     }
 
-    // Whether pull_apart needs the normal velocity across a gap (a viscous bridge): otherwise the
-    // engine leaves it 0 and computes no velocity there.
+    // Whether a pair across a gap needs its velocities (a viscous bridge: normal and tangential
+    // lubrication): otherwise the engine leaves them 0, computes no velocity there, and a bridge
+    // across a gap pulls along the line of centres only.
     bool needs_gap_velocity() const { return cohesion.needs_gap_velocity(); }
 
     // force() for surfaces apart (overlap δ ≤ 0, m), where only a bridge can act: its attraction

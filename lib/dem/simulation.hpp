@@ -312,12 +312,12 @@ private:
         c.m_eff = shape.m_eff;
         c.dt = dt_;
         c.wall = wall;
-        if (c.overlap <= 0) {  // apart: only cohesion acts, on the gap (and a viscous bridge on v_n)
+        if (c.overlap <= 0 && !law_.needs_gap_velocity()) {  // apart: only cohesion acts, on the gap alone
             c.v_rel = c.v_tangential = c.w_rel = Vec3::Zero();
-            if (law_.needs_gap_velocity()) c.v_normal = (p_.velocity[i] - vj).dot(c.normal);
             return c;
         }
-        // Contact point at the middle of the overlap; lever arms from each centre.
+        // Contact point at the middle of the overlap (of the gap, for a viscous bridge); lever arms
+        // from each centre.
         const double li = ri - 0.5 * c.overlap, lj = rj - 0.5 * c.overlap;
         c.v_rel = p_.velocity[i] + p_.angular_velocity[i].cross(-li * c.normal) - (vj + wj.cross(lj * c.normal));
         c.v_normal = c.v_rel.dot(c.normal);
@@ -345,17 +345,16 @@ private:
         }
         // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
         // overlap and the force are computed as pair_geometry and force() compute them (same bits).
-        if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0) {
-            const Vec3 n = d / dist;
-            const double vn = law_.needs_gap_velocity() ? (p_.velocity[i] - p_.velocity[j]).dot(n) : 0.0;
-            out.force_i = (0.0 - law_.pull_apart(overlap, vn, dt_, false, s, lost)) * n;
+        // A viscous bridge also drags across the gap: the full geometry below.
+        if (const double overlap = p_.radius[i] + p_.radius[j] - dist; gap > 0 && overlap <= 0 && !law_.needs_gap_velocity()) {
+            out.force_i = (0.0 - law_.pull_apart(overlap, 0.0, dt_, false, s, lost)) * (d / dist);
             return Acts::central;
         }
         const ContactPair c =
             pair_geometry(i, d, dist, p_.velocity[j], p_.angular_velocity[j], p_.radius[j], shape, j);
         const ContactForce f = law_.force(c, s, lost);
         out.force_i = f.on_i;
-        if (c.overlap <= 0) return Acts::central;  // gap rounded to 0: the same central pull
+        if (c.overlap <= 0 && !law_.needs_gap_velocity()) return Acts::central;  // gap rounded to 0: the same central pull
         const double li = p_.radius[i] - 0.5 * c.overlap, lj = p_.radius[j] - 0.5 * c.overlap;
         out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
         out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;

@@ -42,7 +42,8 @@ std::string canonical(const SlumpScene& s) {
         add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
         add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
         add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
-        if (s.viscosity_pa_s > 0) add("mu_l", s.viscosity_pa_s), add("min_gap", s.min_gap_ratio);
+        // lubrication 2: normal and tangential parts (runs with the normal part alone are not reused).
+        if (s.viscosity_pa_s > 0) add("mu_l", s.viscosity_pa_s), add("min_gap", s.min_gap_ratio), add("lubrication", 2);
     }
     add("dt", s.dt_s), add("g", s.gravity), add("settle", s.settle_time_s), add("spread", s.spread_time_s);
     add("rest_speed", s.rest_speed_m_per_s), add("rest_duration", s.rest_duration_s), add("skin", s.skin_m);

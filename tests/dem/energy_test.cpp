@@ -155,3 +155,14 @@ TEST_CASE("Energy ledger balances for a wet column collapsing from a lifted tube
     const auto wall = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
     check_ledger(Law(material(0.5, 0.1), CohesionMikamiBridge{k, r, 0.074, wall}), "wet");
 }
+
+TEST_CASE("Energy ledger balances for a viscous wet column: the bridge's lubrication is booked as lost",
+          "[dem][energy][bridge][viscous][slow]") {
+    // μ = 0.05 Pa s (a light oil, 50× water) so that lubrication is a large share of the loss: a
+    // normal or tangential part booked wrongly would leave a drift that does not shrink with dt.
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
+    const double vhat = 0.05544;
+    const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
+    const auto wall = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
+    check_ledger(Law(material(0.5, 0.1), CohesionMikamiBridge{k, r, 0.074, wall, 0.05, 0.01 * r}), "viscous wet");
+}

@@ -203,6 +203,57 @@ TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, a
     }
 }
 
+TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) v_t by hand, with its torques",
+          "[dem][bridge][viscous]") {
+    const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01, dt = 1e-6;
+    const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
+    const CohesionMikamiBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
+    const double rstar = r / 2;
+    // Goldman, Cox & Brenner (1967): a sphere sliding parallel to a plane at gap s << R.
+    auto by_hand = [&](double gap) {
+        return 6 * M_PI * mu * rstar * (8.0 / 15.0 * std::log(rstar / std::max(gap, s_min)) + 0.9588);
+    };
+    SECTION("the law at a fixed gap and sliding speed, and its loss") {
+        CohesionMikamiBridge::State b, none;
+        Dissipation lost;
+        viscous.pull(0.0, 0.0, dt, false, b, lost);  // contact: the bridge forms
+        const Vec3 sliding(0, v, 0.5 * v);
+        for (double gap_hat : {0.0, 0.001, 0.05, 0.2}) {
+            INFO("gap " << gap_hat << " R");
+            Dissipation step;
+            const Vec3 f = viscous.drag(-gap_hat * r, sliding, dt, false, b, step);
+            CHECK((f + by_hand(gap_hat * r) * sliding).norm() < 1e-12 * f.norm());
+            CHECK(step.bridge == Approx(by_hand(gap_hat * r) * sliding.squaredNorm() * dt).epsilon(1e-12));
+        }
+        CHECK(by_hand(0.0) == Approx(6 * M_PI * mu * rstar * (8.0 / 15.0 * std::log(50.0) + 0.9588)));  // s = s_min = R*/50
+        CHECK(viscous.drag(-0.05 * r, sliding, dt, false, none, lost) == Vec3::Zero());   // no bridge: no drag
+        CHECK(still.drag(-0.05 * r, sliding, dt, false, b, lost) == Vec3::Zero());        // no viscosity: no drag
+    }
+    SECTION("in the engine: a bridged pair sliding and spinning across a gap") {
+        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+        Particles p;
+        p.add({0, 0, 0}, r, 2200);
+        p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
+        Simulation sim(p, Wet(Material{}, viscous), {}, Vec3::Zero(), dt, 0.1 * r);
+        const double spin = 3.0;  // rad/s about z
+        sim.particles().position[1] = Vec3(2.1 * r, 0, 0);
+        sim.particles().velocity[1] = Vec3(0, v, 0);
+        sim.particles().angular_velocity[1] = Vec3(0, 0, spin);
+        sim.refresh_forces();
+        // The gap's middle lies 1.05 R from each centre. There sphere 1 moves at v + ω × (−1.05 R x̂)
+        // = (v − 1.05 R ω) ŷ, so sphere 0 is dragged along +ŷ by c (v − 1.05 R ω), and both are
+        // turned about +ẑ by the lever 1.05 R.
+        const double drag = by_hand(0.1 * r) * (v - 1.05 * r * spin);
+        const auto& q = sim.particles();
+        CHECK(q.force[0].x() == Approx(M_PI * r * gamma * bridge::mikami_fhat(k, 0.1)).epsilon(1e-12));  // v_n = 0
+        CHECK(q.force[0].y() == Approx(drag).epsilon(1e-12));
+        CHECK(q.force[1].y() == Approx(-drag).epsilon(1e-12));
+        CHECK(q.torque[0].z() == Approx(1.05 * r * drag).epsilon(1e-12));
+        CHECK(q.torque[1].z() == Approx(1.05 * r * drag).epsilon(1e-12));
+        CHECK(std::abs(q.torque[0].x()) + std::abs(q.torque[0].y()) < 1e-12 * std::abs(q.torque[0].z()));
+    }
+}
+
 TEST_CASE("A bridge stretched far beyond the list's reach pulls until it ruptures", "[dem][bridge][neighbors]") {
     const double r = 1e-3, gamma = 0.074, vhat = 0.05544, skin = 0.01 * r;
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});

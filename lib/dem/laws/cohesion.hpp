@@ -12,8 +12,10 @@
 //    F_v = 6π μ R*² v_n / s (Pitois, Moucheront & Chateau 2000, Eq. 3 for s ≪ R; the normal part
 //    of LIGGGHTS' easo/capillary/viscous), s = max(gap, s_min), s_min the surface roughness; it
 //    pulls a separating pair together and pushes an approaching one apart, while a bridge holds.
-//    R* = R/2 sphere–sphere, R at a wall. Ledger: F_v v_n dt ≥ 0 is booked as the bridge's loss.
-//    The tangential lubrication force (Goldman, Cox & Brenner 1967) is not included.
+//    With it the tangential lubrication force F_t = −6π μ R* (8/15 ln(R*/s) + 0.9588) v_t (Goldman,
+//    Cox & Brenner 1967 for a sphere sliding past a plane, s ≪ R; the tangential part of
+//    easo/capillary/viscous, after Nase et al. 2001), v_t the sliding velocity at the contact point.
+//    R* = R/2 sphere–sphere, R at a wall. Ledger: F_v v_n dt + |F_t||v_t| dt ≥ 0 is the bridge's loss.
 #pragma once
 
 #include <algorithm>
@@ -36,6 +38,8 @@ struct CohesionNone {
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
     bool holds(const State&) const { return false; }
     bool needs_gap_velocity() const { return false; }
+    template <class Lost>
+    Vec3 drag(double, const Vec3&, double, bool, const State&, Lost&) const { return Vec3::Zero(); }
 };
 
 struct CohesionMikamiBridge {
@@ -57,9 +61,10 @@ struct CohesionMikamiBridge {
         : k(sphere), radius(radius_m), gamma(gamma_n_per_m), wall(wall_coefficients), viscosity(viscosity_pa_s),
           min_gap(min_gap_m), touching_(bridge_force(k, 0.0)), touching_wall_(wall ? bridge_force(*wall, 0.0) : 0.0),
           lubrication_(6 * M_PI * viscosity_pa_s * 0.25 * radius_m * radius_m),
-          lubrication_wall_(6 * M_PI * viscosity_pa_s * radius_m * radius_m) {}
+          lubrication_wall_(6 * M_PI * viscosity_pa_s * radius_m * radius_m),
+          drag_touching_(drag_coefficient(0.5 * radius_m, min_gap_m)), drag_touching_wall_(drag_coefficient(radius_m, min_gap_m)) {}
 
-    // Whether the engine must give pull() the normal velocity of a pair across a gap.
+    // Whether the engine must give pull() and drag() the velocities of a pair across a gap.
     bool needs_gap_velocity() const { return viscosity > 0; }
 
     // Whether a bridge holds this pair: across a gap, nothing else can act on it.
@@ -79,6 +84,18 @@ struct CohesionMikamiBridge {
         const double viscous = (with_wall ? lubrication_wall_ : lubrication_) * v_normal / std::max(-overlap, min_gap);
         lost.bridge += viscous * v_normal * dt;
         return capillary + viscous;
+    }
+
+    // The tangential lubrication force on particle i (N), sliding at v_tangential (m/s, i relative to
+    // j at the contact point) at overlap δ (m, < 0 a gap) while the bridge (state s, as pull() left
+    // it this step) holds; zero without a viscous part. lost: F_t·v_t dt is added.
+    template <class Lost>
+    DEMSCALE_HOT Vec3 drag(double overlap, const Vec3& v_tangential, double dt, bool with_wall, const State& s, Lost& lost) const {
+        if (viscosity <= 0 || !s.bridged || (with_wall && !wall)) return Vec3::Zero();
+        const double coefficient = overlap >= -min_gap ? (with_wall ? drag_touching_wall_ : drag_touching_)
+                                                       : drag_coefficient(with_wall ? radius : 0.5 * radius, -overlap);
+        lost.bridge += coefficient * v_tangential.squaredNorm() * dt;
+        return -coefficient * v_tangential;
     }
 
     // Potential energy of this pair's bridge, J (≤ 0; 0 without a bridge).
@@ -117,6 +134,14 @@ private:
     // so most of a wet pile's pairs, which touch, need no exp.
     double touching_, touching_wall_;
     double lubrication_, lubrication_wall_;  // 6π μ R*², N s (sphere–sphere R* = R/2; wall R* = R)
+    double drag_touching_, drag_touching_wall_;  // drag_coefficient at s = s_min, N s/m
+
+    // 6π μ R* (8/15 ln(R*/s) + 0.9588), N s/m, with s = max(gap, s_min); never negative (the
+    // bracket would turn at s ≈ 6 R*, far beyond any rupture gap).
+    double drag_coefficient(double r_star, double gap) const {
+        const double s = std::max(gap, min_gap);
+        return 6 * M_PI * viscosity * r_star * std::max(0.0, 8.0 / 15.0 * std::log(r_star / s) + 0.9588);
+    }
 
     double potential(const bridge::MikamiCoefficients& law, double overlap) const {
         return -law.force_scale * radius * radius * gamma * bridge::mikami_work_to_rupture(law, -overlap / radius);
