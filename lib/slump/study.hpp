@@ -1,8 +1,7 @@
 // A coarse-graining study of the slump test: an ensemble of fine runs (seeds seed, seed+1, …) and,
 // for every candidate exponent k and scale factor S_f, an ensemble of coarse runs with the same
-// seeds, judged against the fine ensemble (slump/ensemble_verdict.hpp). Runs are independent, so
-// they run side by side (jobs × threads each), costliest first; each finished run is cached by its
-// scene key at once, so an interrupted study resumes where it stopped.
+// seeds, judged against the fine ensemble (slump/ensemble_verdict.hpp). The runs go through
+// run_batch: side by side, cached, resumable.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "slump/coarse_grain.hpp"
 #include "slump/comparison.hpp"
 #include "slump/ensemble_verdict.hpp"
+#include "slump/run_batch.hpp"
 #include "slump/run_cache.hpp"
 
 namespace demscale::slump {
@@ -28,16 +28,6 @@ struct StudyPlan {
     int jobs = 1, threads_per_job = 1;
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
-};
-
-struct StudyRun {
-    CoarseGraining grain;
-    SlumpScene scene;
-    std::string key;
-    std::vector<std::string> warnings;  // geometry limits (coarse_grain.hpp)
-    SlumpResult result;
-    bool from_cache = false;
-    RunComparison versus_reference;     // against the fine ensemble's means
 };
 
 struct Study {

@@ -1,0 +1,117 @@
+#include "slump/run_batch.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <omp.h>
+#include <thread>
+
+#include "core/interrupt.hpp"
+
+namespace demscale::slump {
+
+namespace {
+
+std::string describe(const StudyRun& r) {
+    char b[200];
+    if (!r.label.empty()) std::snprintf(b, sizeof b, "%s, seed %u", r.label.c_str(), r.scene.seed);
+    else if (r.grain.sf == 1) std::snprintf(b, sizeof b, "fine, seed %u", r.scene.seed);
+    else std::snprintf(b, sizeof b, "S_f = %g, k = %g, seed %u", r.grain.sf, r.grain.exponent, r.scene.seed);
+    return b;
+}
+
+// Relative cost of a run, to start the longest first: particles ∝ S_f⁻³, steps ∝ 1/dt.
+double expected_cost(const StudyRun& r, double reference_radius) {
+    return std::pow(reference_radius / r.scene.radius_m, 3) / r.scene.dt_s;
+}
+
+}  // namespace
+
+void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const std::function<void(const std::string&)>& log) {
+    std::map<std::string, StudyRun*> unique;  // distinct scenes only
+    for (auto* r : all) {
+        r->key = scene_key(r->scene);
+        unique.emplace(r->key, r);
+    }
+    std::optional<RunCache> cache;
+    if (o.cache_dir) cache.emplace(*o.cache_dir);
+    std::vector<StudyRun*> pending;
+    for (auto& [key, r] : unique) {
+        if (cache)
+            if (auto hit = cache->load(key)) {
+                r->result = std::move(*hit);
+                r->from_cache = true;
+                continue;
+            }
+        pending.push_back(r);
+    }
+    const double radius = o.reference_radius_m;
+    std::sort(pending.begin(), pending.end(),
+              [&](const StudyRun* a, const StudyRun* b) { return expected_cost(*a, radius) > expected_cost(*b, radius); });
+    if (log)
+        log(std::to_string(unique.size()) + " distinct runs, " + std::to_string(unique.size() - pending.size()) + " cached, " +
+            std::to_string(pending.size()) + " to run (" + std::to_string(o.jobs) + " at a time, " +
+            std::to_string(o.threads_per_job) + " thread(s) each)");
+
+    double total_cost = 0, done_cost = 0;
+    for (const auto* r : pending) total_cost += expected_cost(*r, radius);
+    const auto runs_start = std::chrono::steady_clock::now();
+    std::mutex log_mutex;
+    std::atomic<std::size_t> next{0}, finished{0}, interrupted{0};
+    std::exception_ptr failure;
+    auto worker = [&] {
+        omp_set_num_threads(o.threads_per_job);  // this thread's own OpenMP setting
+        for (std::size_t i; (i = next++) < pending.size();) {
+            StudyRun& r = *pending[i];
+            try {
+                if (failure) return;
+                // A run interrupted earlier left its checkpoint beside the cache: continue it.
+                SlumpPhases phases;
+                if (cache) phases.checkpoint = cache->dir() / (r.key + ".ckpt");
+                const bool resumed = cache && std::filesystem::exists(phases.checkpoint);
+                if (resumed) phases.resume = phases.checkpoint;
+                r.result = run_slump(r.scene, {}, o.force_dt, phases);
+                if (cache) cache->store(r.key, r.result, o.threads_per_job), std::filesystem::remove(phases.checkpoint);
+                const std::lock_guard lock(log_mutex);
+                done_cost += expected_cost(r, radius);
+                if (log) {
+                    // Time left: the elapsed time scaled by the expected cost still to run.
+                    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - runs_start).count();
+                    const double left = done_cost > 0 ? elapsed * (total_cost - done_cost) / done_cost : 0;
+                    char b[300];
+                    std::snprintf(b, sizeof b, "[%zu/%zu] %s: %zu particles, %zu steps, %.1f s%s; about %.0f s left", ++finished,
+                                  pending.size(), describe(r).c_str(), r.result.particles, r.result.steps, r.result.wall_s,
+                                  resumed ? " (resumed from its checkpoint)" : "", left);
+                    log(b);
+                }
+            } catch (const Interrupted&) {
+                const std::lock_guard lock(log_mutex);
+                ++interrupted;
+                if (!failure) failure = std::current_exception();
+            } catch (...) {
+                const std::lock_guard lock(log_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 0; j < std::min<int>(o.jobs, static_cast<int>(pending.size())); ++j) threads.emplace_back(worker);
+    for (auto& t : threads) t.join();
+    if (interrupted > 0 && cache)
+        throw Interrupted(std::to_string(finished) + " of " + std::to_string(pending.size()) + " runs finished and cached, " +
+                              std::to_string(interrupted) + " checkpointed; run the same command again to continue",
+                          cache->dir().string());
+    if (failure) std::rethrow_exception(failure);
+
+    for (auto* r : all) {
+        const StudyRun& ran = *unique.at(r->key);
+        if (r != &ran) r->result = ran.result, r->from_cache = ran.from_cache;
+        r->warnings = geometry_warnings(r->scene, r->result.particles);
+    }
+}
+
+}  // namespace demscale::slump

@@ -1,0 +1,41 @@
+// Running many slump scenes: each distinct scene (by its key) once, cached ones loaded, the rest
+// side by side (jobs × threads each), costliest first. Each finished run is cached at once, so an
+// interrupted batch resumes where it stopped; progress lines say how many remain and about how long.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "slump/coarse_grain.hpp"
+#include "slump/comparison.hpp"
+#include "slump/run_cache.hpp"
+
+namespace demscale::slump {
+
+struct StudyRun {
+    CoarseGraining grain;
+    SlumpScene scene;
+    std::string key;
+    std::vector<std::string> warnings;  // geometry limits (coarse_grain.hpp)
+    SlumpResult result;
+    bool from_cache = false;
+    RunComparison versus_reference;     // against the fine ensemble's means
+    std::string label;                  // for progress lines; empty: from grain and seed
+};
+
+struct BatchOptions {
+    int jobs = 1, threads_per_job = 1;
+    std::optional<std::filesystem::path> cache_dir;  // none: run everything
+    bool force_dt = false;
+    double reference_radius_m = 1e-3;  // to rank runs by cost (particles ∝ (R/R̄)³, steps ∝ 1/dt)
+};
+
+// Fills every run's key, result, from_cache and warnings. Throws std::runtime_error when a run
+// fails and Interrupted (with the cache folder) on an interrupt after checkpointing.
+void run_batch(const std::vector<StudyRun*>& runs, const BatchOptions& options,
+               const std::function<void(const std::string&)>& log = {});
+
+}  // namespace demscale::slump

@@ -1,0 +1,63 @@
+// The exponent k of γ̄ = γ S_f^k measured from response curves (docs/exponent-estimate.md).
+//
+// A response curve is a measured response y (for the slump test: slump over fill height) of an
+// ensemble of seeds at several values x = ln γ of the cohesion variable. If k is the right
+// exponent, the coarse curve at scale factor S_f is the fine curve shifted by Δ = k ln S_f along x:
+// y_coarse(x) = y_fine(x − k ln S_f).
+//
+// Estimator (least squares on a shift): the fine curve is the monotone cubic interpolant (Steffen
+// 1990, GSL) of its ensemble means (linear for two levels), held flat beyond its first and last level (the plateaus of a pile that stands
+// and one that has fully slumped); k̂ minimises Σ_j (ȳ_j − y_fine(x_j − k ln S_f))² over the coarse
+// levels j, per S_f, and jointly over all S_f (one k, every coarse level). The search runs over
+// [k_min, k_max] on a grid of 0.05 refined by golden section. 95 % interval: percentile bootstrap
+// over seeds (every ensemble, fine and coarse, resampled with replacement, k̂ recomputed), with a
+// fixed generator seed so that an estimate repeats. k is undetermined when the objective is flat
+// at its minimum (the coarse levels lie on the plateaus: many shifts fit equally) or the interval
+// reaches the search bounds.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "stats/summary.hpp"
+
+namespace demscale::stats {
+
+struct ResponseLevel {
+    double x = 0;            // ln of the cohesion variable (for γ in N/m: ln γ)
+    std::vector<double> y;   // the response, one value per seed
+};
+
+struct ResponseCurve {
+    double sf = 1;                     // scale factor of its particles (fine: 1)
+    std::vector<ResponseLevel> levels; // in any order
+};
+
+struct ShiftSearch {
+    double k_min = -2, k_max = 6;
+    int resamples = 1000;
+    unsigned seed = 20170101;  // of the bootstrap's generator
+};
+
+struct ExponentEstimate {
+    double sf = 0;            // 0 for the joint estimate over every S_f
+    double k = 0;             // k̂
+    Interval ci;              // 95 % percentile bootstrap interval
+    double rms = 0;           // root mean square residual of the coarse means at k̂
+    bool determined = false;  // a unique minimum, and the interval inside the search bounds
+};
+
+// The fine curve's value at x: the interpolant through the levels' means, flat beyond them.
+double interpolate_response(const ResponseCurve& fine, double x);
+
+// Root mean square residual of the coarse curves' means against the fine curve shifted by
+// k ln S_f: what k̂ minimises, and how far a given k (of a similarity group) is from the data.
+double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse, double k);
+
+// k̂ with its interval for each coarse curve, then (with more than one) jointly: one entry per
+// coarse curve in their order, the joint one last. Throws std::invalid_argument for a fine curve
+// with fewer than two levels, a coarse curve with S_f ≤ 1 or no levels, or an empty ensemble.
+std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse,
+                                                const ShiftSearch& search = {});
+
+}  // namespace demscale::stats
