@@ -66,6 +66,7 @@ std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regr
 std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
 std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts, pile
 std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
+std::vector<Command> estimate_commands(CLI::App& app);    // estimate-exponent
 std::vector<Command> report_commands(CLI::App& app);      // report
 
 }  // namespace demscale::cli

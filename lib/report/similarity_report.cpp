@@ -19,6 +19,7 @@
 #include "report/bridge_error_files.hpp"
 #include "report/curve_files.hpp"
 #include "report/document.hpp"
+#include "report/exponent_estimate_files.hpp"
 #include "report/similarity_table.hpp"
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
@@ -177,6 +178,12 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.cache_dir = o.cache_dir;
     plan.seeds = o.seeds;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
+    if (o.estimate) {
+        slump::ResponsePlan rp = *o.estimate;
+        rp.fine = scene;
+        rp.batch.jobs = o.jobs, rp.batch.threads_per_job = o.threads_per_job;
+        slump::validate_response_plan(rp);
+    }
 
     Document doc;
     doc.title = "demscale similarity report: " + scene.name;
@@ -293,6 +300,59 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         }
     });
 
+    Section estimate_section{"Measured exponent", {}};
+    if (o.estimate) timed("measured exponent", [&] {
+        slump::ResponsePlan rp = *o.estimate;
+        rp.fine = scene;
+        rp.batch.jobs = o.jobs, rp.batch.threads_per_job = o.threads_per_job, rp.batch.cache_dir = o.cache_dir;
+        const auto t0 = Clock::now();
+        const auto est = slump::run_response_study(rp, [&](const std::string& s) { say("estimate: " + s); });
+        const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+        std::size_t fine_runs = 0, coarse_runs = 0;
+        for (const auto& e : est.fine) fine_runs += e.runs.size();
+        for (const auto& levels : est.coarse)
+            for (const auto& e : levels) coarse_runs += e.runs.size();
+        const auto files = write_estimate_files(est, o.scene_label, figures, true);
+        const std::string cost = "Cost: " + std::to_string(fine_runs) + " fine runs (" + std::to_string(est.fine.size()) + " levels x " +
+                                 std::to_string(rp.seeds) + " seeds) and " + std::to_string(coarse_runs) + " coarse runs, " +
+                                 format_short(wall, 3) + " s for this section (cached runs cost nothing).";
+        if (!est.wet) {
+            estimate_section.blocks.push_back(Paragraph{
+                "A dry scene has no cohesion to vary. The dry control: coarse against fine, one ensemble each, the error coarse-graining "
+                "the dry laws leaves and no exponent can remove (docs/exponent-estimate.md). " + cost});
+            estimate_section.blocks.push_back(TableBlock{dry_baseline_table(est, o.scene_label)});
+            estimate_section.blocks.push_back(TableBlock{response_table(est, o.scene_label)});
+            return;
+        }
+        const auto& joint = est.estimates.back();
+        estimate_section.blocks.push_back(Paragraph{
+            "Instead of judging candidate exponents, measure one. The fine scene runs at several surface tensions (factors of the "
+            "scene's gamma), each coarse S_f at gamma-bar = the same factors times S_f^" + format_short(rp.offset_exponent) +
+            ". If gamma-bar = gamma S_f^k keeps the pile, the coarse curve of slump over fill height against ln gamma-bar is the fine "
+            "one shifted by k ln S_f; k-hat is the least-squares shift, with a 95 % bootstrap interval over seeds "
+            "(docs/exponent-estimate.md). " + cost});
+        estimate_section.blocks.push_back(TableBlock{exponent_estimate_table(est, o.scene_label)});
+        estimate_section.blocks.push_back(FigureBlock{files.figure_png, "Slump response to surface tension: raw, collapsed at the "
+                                                                        "measured k and at k = 1, 2, 3, and the residual against k"});
+        estimate_section.blocks.push_back(TableBlock{response_table(est, o.scene_label)});
+        verdict_section.blocks.push_back(Paragraph{
+            "Measured exponent (" + (joint.sf == 0 ? std::string("all S_f together") : "S_f = " + format_short(joint.sf)) +
+            "): k-hat = " + format_short(joint.k, 3) + " [" + format_short(joint.ci.low, 3) + ", " +
+            format_short(joint.ci.high, 3) + "]" + (joint.determined ? "" : ", undetermined") + " (section Measured exponent)."});
+        for (const auto& e : est.estimates)
+            if (!e.determined)
+                caveats.push_back("measured exponent at " + (e.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(e.sf)) +
+                                  ": undetermined (no unique shift maps the curves onto each other)");
+        auto not_at_rest = [&](const slump::ResponseEnsemble& e) {
+            if (!e.all_at_rest())
+                caveats.push_back("measured exponent: runs at S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) +
+                                  " N/m not all at rest");
+        };
+        for (const auto& e : est.fine) not_at_rest(e);
+        for (const auto& levels : est.coarse)
+            for (const auto& e : levels) not_at_rest(e);
+    });
+
     Section inputs{"Inputs", {}};
     std::time_t now = std::time(nullptr);
     char date[64];
@@ -322,7 +382,9 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     Section caveat_section{"Caveats", {}};
     if (caveats.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
     else caveat_section.blocks.push_back(BulletList{caveats});
-    doc.sections = {verdict_section, inputs, similarity, curves, bridges, slump_section, caveat_section};
+    doc.sections = {verdict_section, inputs, similarity, curves, bridges, slump_section};
+    if (o.estimate) doc.sections.push_back(estimate_section);
+    doc.sections.push_back(caveat_section);
 
     ReportOutcome out;
     out.html = o.out_dir / "report.html";

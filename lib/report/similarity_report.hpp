@@ -1,6 +1,7 @@
 // The similarity report (issue #6): one document with the inputs, Table 1 and the similarity
 // groups, Figs. 3 and 4 with their collapse, the bridge models' accuracy and cost, the slump study
-// (pictures, profiles, errors, speed-up, best exponent, verdict) and the caveats. Written as
+// (pictures, profiles, errors, speed-up, best exponent, verdict), optionally the measured exponent
+// (response curves and k-hat), and the caveats. Written as
 // DIR/report.html (self-contained) and DIR/report.md with DIR/figures/ beside it; both appear only
 // once everything is computed (temporary files renamed), so an interrupted run leaves no half report.
 #pragma once
@@ -10,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "slump/response_study.hpp"
 
 namespace demscale::report {
 
@@ -25,6 +28,8 @@ struct ReportOptions {
     int jobs = 1, threads_per_job = 1;
     int seeds = 8;                          // runs per ensemble, fine and coarse
     std::string git_revision;               // shown in the inputs
+    // The measured exponent (its fine scene and runner filled in by the report): none, no section.
+    std::optional<slump::ResponsePlan> estimate;
 };
 
 struct ReportOutcome {

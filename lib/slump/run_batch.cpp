@@ -81,7 +81,7 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
                 if (log) {
                     // Time left: the elapsed time scaled by the expected cost still to run.
                     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - runs_start).count();
-                    const double left = done_cost > 0 ? elapsed * (total_cost - done_cost) / done_cost : 0;
+                    const double left = done_cost > 0 ? std::max(0.0, elapsed * (total_cost - done_cost) / done_cost) : 0;
                     char b[300];
                     std::snprintf(b, sizeof b, "[%zu/%zu] %s: %zu particles, %zu steps, %.1f s%s; about %.0f s left", ++finished,
                                   pending.size(), describe(r).c_str(), r.result.particles, r.result.steps, r.result.wall_s,

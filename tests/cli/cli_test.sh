@@ -149,6 +149,34 @@ case $case_name in
     expect 2 'bad.toml:2: check.slump_tolerance = -1' -- "$demscale" report --quick --scene "$work/bad.toml" --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" report --quick --sf 20 --out "$work/c"
     [ ! -e "$work/c" ] || fail "a refused study or report created output" ;;
+  estimate_exponent_small)
+    small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --seeds 2 --levels 3 --resamples 100 --cache "$work/cache" --out "$work/e")
+    # Exit 0 (k determined) or 4 (undetermined) are both answers; the files and the summary must be there.
+    "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1; rc=$?
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { cat "$work/out" >&2; fail "exit $rc"; }
+    grep -q '12 distinct runs' "$work/out" || fail "did not say what it runs (3 levels x 2 seeds, fine and S_f = 1.4)"
+    grep -q 'left' "$work/out" || fail "no estimate of the time left"
+    grep -q '^S_f = 1.4: k-hat = ' "$work/out" || fail "no estimate printed"
+    grep -q '6 fine runs (3 levels x 2 seeds)' "$work/out" || fail "cost of the fine curve not stated"
+    for f in estimate_response.csv estimate_exponent.csv estimate_residual.csv estimate_collapse.gp; do
+      [ -s "$work/e/$f" ] || fail "$f missing"
+    done
+    grep -qi 'nan\|inf' "$work/e/estimate_exponent.csv" "$work/e/estimate_response.csv" && fail "NaN or inf in the estimate"
+    [ "$(grep -c '^1.4,' "$work/e/estimate_response.csv")" -eq 3 ] || fail "not three coarse levels"
+    "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1
+    grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
+    # A dry scene has nothing to vary: the dry control, one level per S_f.
+    sed 's/^\[run\]/[liquid]\nwet = false\n[run]/' "$src/data/scenes/small_wet.toml" >"$work/dry.toml"
+    expect 0 'dry control' -- "$demscale" estimate-exponent --scene "$work/dry.toml" --sf 1.4 --seeds 2 --cache "$work/cache" --out "$work/d" --no-png
+    grep -q 'dry scene: no liquid to vary' "$work/out" || fail "dry scene not said"
+    [ -s "$work/d/estimate_dry_control.csv" ] || fail "dry control CSV missing" ;;
+  estimate_exponent_bad_input_exit_2)
+    expect 2 '--levels = 2.*3 to 12' -- "$demscale" estimate-exponent --levels 2 --out "$work/e"
+    expect 2 '--range = 4,1' -- "$demscale" estimate-exponent --range 4,1 --out "$work/e"
+    expect 2 '--seeds = 1.*2 to 64' -- "$demscale" estimate-exponent --seeds 1 --out "$work/e"
+    expect 2 '--sf = 1.*> 1' -- "$demscale" estimate-exponent --sf 1 --out "$work/e"
+    expect 2 '--resamples = 5' -- "$demscale" estimate-exponent --resamples 5 --out "$work/e"
+    [ ! -e "$work/e" ] || fail "a refused estimate created output" ;;
   report_quick_structure)
     expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"
     md="$work/r/report.md" html="$work/r/report.html"

@@ -1,0 +1,145 @@
+#include "slump/response_study.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/input_error.hpp"
+
+namespace demscale::slump {
+
+bool ResponseEnsemble::all_at_rest() const {
+    return std::all_of(runs.begin(), runs.end(), [](const StudyRun& r) { return r.result.came_to_rest; });
+}
+
+namespace {
+
+double slump_over_height(const SlumpResult& r) { return r.slump() / r.initial_height; }
+
+// The seeds' runs of one level: the scene at surface tension gamma (N/m; ignored dry).
+ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int seeds) {
+    ResponseEnsemble e;
+    e.sf = sf;
+    e.gamma = fine.wet ? gamma : 0.0;
+    SlumpScene level = fine;
+    level.liquid.surface_tension_n_per_m = gamma;
+    StudyRun run;
+    run.grain = {sf, 0, {}};  // γ is set here already: k = 0 leaves it
+    run.scene = sf == 1 ? level : coarse_grained(level, run.grain);
+    char label[120];
+    if (sf == 1) std::snprintf(label, sizeof label, "fine%s%.4g N/m", fine.wet ? ", γ = " : "", fine.wet ? gamma : 0.0);
+    else std::snprintf(label, sizeof label, "S_f = %g%s%.4g N/m", sf, fine.wet ? ", γ̄ = " : "", fine.wet ? gamma : 0.0);
+    run.label = fine.wet ? label : (sf == 1 ? "fine, dry" : "S_f = " + format_short(sf, 3) + ", dry");
+    for (int i = 0; i < seeds; ++i) {
+        e.runs.push_back(run);
+        e.runs.back().scene.seed = fine.seed + static_cast<unsigned>(i);
+    }
+    return e;
+}
+
+void summarize_ensemble(ResponseEnsemble& e, double bottom_diameter) {
+    std::vector<double> s, d;
+    for (const auto& r : e.runs) s.push_back(slump_over_height(r.result)), d.push_back(r.result.final.spread_d95 / bottom_diameter);
+    e.slump_over_height = stats::summarize(s);
+    e.spread_over_diameter = stats::summarize(d);
+}
+
+stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& levels) {
+    stats::ResponseCurve c;
+    c.sf = sf;
+    for (const auto& e : levels) {
+        stats::ResponseLevel l;
+        l.x = std::log(e.gamma);
+        for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result));
+        c.levels.push_back(l);
+    }
+    return c;
+}
+
+DryBaseline baseline(double sf, const ResponseEnsemble& fine, const ResponseEnsemble& coarse) {
+    std::vector<double> fs, cs, fd, cd;
+    for (const auto& r : fine.runs) fs.push_back(slump_over_height(r.result)), fd.push_back(r.result.final.spread_d95);
+    for (const auto& r : coarse.runs) cs.push_back(slump_over_height(r.result)), cd.push_back(r.result.final.spread_d95);
+    DryBaseline b;
+    b.sf = sf;
+    b.slump_over_height = stats::difference_interval(fs, cs);
+    const double d_mean = stats::summarize(fd).mean;
+    const stats::Interval d = stats::difference_interval(fd, cd);
+    b.spread_relative = {d.low / d_mean, d.high / d_mean};
+    b.slump_noise = stats::summarize(fs).sd;
+    b.spread_noise = stats::summarize(fd).sd / d_mean;
+    return b;
+}
+
+}  // namespace
+
+std::vector<double> log_spaced_factors(double lo, double hi, int levels, const std::string& range_field,
+                                       const std::string& levels_field) {
+    if (!(lo > 0) || !(hi > lo) || !std::isfinite(hi))
+        throw InputError(range_field, format_number(lo) + "," + format_number(hi),
+                         "two surface tension factors LO,HI with 0 < LO < HI (e.g. 0.25,4)");
+    if (levels < 3 || levels > 12) throw InputError(levels_field, std::to_string(levels), "3 to 12");
+    std::vector<double> f;
+    for (int i = 0; i < levels; ++i) f.push_back(std::stod(format_short(lo * std::pow(hi / lo, double(i) / (levels - 1)), 12)));
+    return f;
+}
+
+void validate_response_plan(const ResponsePlan& plan) {
+    if (plan.seeds < 2 || plan.seeds > 64) throw InputError("--seeds", std::to_string(plan.seeds), "2 to 64 (runs per level)");
+    if (plan.scale_factors.empty()) throw InputError("--sf", "(none)", "at least one scale factor > 1");
+    for (double sf : plan.scale_factors)
+        if (!(sf > 1)) throw InputError("--sf", format_number(sf), "> 1 (the fine scene is S_f = 1)");
+    if (plan.fine.wet) {
+        if (plan.factors.size() < 3) throw InputError("--levels", std::to_string(plan.factors.size()), "3 to 12");
+        for (std::size_t i = 0; i < plan.factors.size(); ++i)
+            if (!(plan.factors[i] > 0) || (i > 0 && !(plan.factors[i] > plan.factors[i - 1])))
+                throw InputError("--range", format_number(plan.factors[i]), "positive surface tension factors, ascending");
+    }
+    require_in_open_interval(plan.offset_exponent, -20, 20, "--offset");
+    if (plan.batch.jobs < 1) throw InputError("--jobs", std::to_string(plan.batch.jobs), ">= 1");
+    if (plan.batch.threads_per_job < 1) throw InputError("--threads", std::to_string(plan.batch.threads_per_job), ">= 1");
+    check_slump_time_step(plan.fine, plan.batch.force_dt);
+    for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, 0, {}}), plan.batch.force_dt);
+}
+
+ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log) {
+    const auto start = std::chrono::steady_clock::now();
+    validate_response_plan(plan);
+    ResponseStudy study;
+    study.wet = plan.fine.wet;
+    const double gamma = plan.fine.liquid.surface_tension_n_per_m;
+    const std::vector<double> factors = study.wet ? plan.factors : std::vector<double>{1.0};
+    for (double f : factors) study.fine.push_back(ensemble(plan.fine, 1, f * gamma, plan.seeds));
+    for (double sf : plan.scale_factors) {
+        study.coarse.emplace_back();
+        for (double f : factors) study.coarse.back().push_back(ensemble(plan.fine, sf, f * gamma * std::pow(sf, plan.offset_exponent), plan.seeds));
+    }
+    std::vector<StudyRun*> all;
+    for (auto& e : study.fine)
+        for (auto& r : e.runs) all.push_back(&r);
+    for (auto& levels : study.coarse)
+        for (auto& e : levels)
+            for (auto& r : e.runs) all.push_back(&r);
+    BatchOptions batch = plan.batch;
+    batch.reference_radius_m = plan.fine.radius_m;
+    run_batch(all, batch, log);
+
+    const double d0 = plan.fine.bottom_diameter_m;
+    for (auto& e : study.fine) summarize_ensemble(e, d0);
+    for (auto& levels : study.coarse)
+        for (auto& e : levels) summarize_ensemble(e, d0);
+    if (study.wet) {
+        study.fine_curve = curve(1, study.fine);
+        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
+            study.coarse_curves.push_back(curve(plan.scale_factors[s], study.coarse[s]));
+        study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+    } else {
+        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
+            study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front()));
+    }
+    study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return study;
+}
+
+}  // namespace demscale::slump

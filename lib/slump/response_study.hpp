@@ -1,0 +1,67 @@
+// Response curves of the slump test to cohesion, and the exponent measured from them
+// (docs/exponent-estimate.md). The fine scene runs at surface tensions γ_i = f_i·γ (the plan's
+// factors), each an ensemble of seeds; each coarse S_f runs at γ̄_i = f_i·γ·S_f^offset, the same
+// factors moved by a guessed exponent (default 2, between the groups' 1 and 3) so that its levels
+// straddle the fine transition for any k near it. The response is slump over fill height, and the
+// spread d95 over the cone's bottom diameter. k̂ per S_f and jointly: stats/curve_shift.hpp.
+// A dry scene has no cohesion to vary: its one level per S_f is the dry control, the coarse −
+// fine difference that no exponent can remove.
+#pragma once
+
+#include <vector>
+
+#include "slump/run_batch.hpp"
+#include "stats/curve_shift.hpp"
+#include "stats/summary.hpp"
+
+namespace demscale::slump {
+
+struct ResponsePlan {
+    SlumpScene fine;
+    std::vector<double> scale_factors = {1.40, 1.96};
+    std::vector<double> factors = {0.25, 0.5, 1, 2, 4};  // of the scene's γ, ascending (dry: ignored)
+    double offset_exponent = 2;  // coarse levels at f·γ·S_f^offset
+    int seeds = 8;
+    BatchOptions batch;
+    stats::ShiftSearch search;
+};
+
+struct ResponseEnsemble {
+    double sf = 1;
+    double gamma = 0;            // N/m (0 dry)
+    std::vector<StudyRun> runs;  // one per seed
+    stats::Summary slump_over_height, spread_over_diameter;
+    bool all_at_rest() const;
+};
+
+// Coarse − fine at one S_f on a dry scene: the baseline error of coarse-graining the dry laws.
+struct DryBaseline {
+    double sf = 1;
+    stats::Interval slump_over_height;  // 95 % Welch interval of mean(s̄/H̄₀) − mean(s/H₀)
+    stats::Interval spread_relative;    // of mean(d̄95) − mean(d95), over the fine mean
+    double slump_noise = 0, spread_noise = 0;  // the fine ensemble's sd of each (spread: relative)
+};
+
+struct ResponseStudy {
+    bool wet = true;
+    std::vector<ResponseEnsemble> fine;                 // per level, ascending γ
+    std::vector<std::vector<ResponseEnsemble>> coarse;  // per S_f (plan order), per level
+    stats::ResponseCurve fine_curve;                    // slump over height against ln γ
+    std::vector<stats::ResponseCurve> coarse_curves;
+    std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only)
+    std::vector<DryBaseline> baselines;                 // dry only
+    double wall_s = 0;
+};
+
+// `levels` surface tension factors log-spaced from lo to hi, each rounded to 12 digits so that a
+// level meant to be 1 (or 2) is exactly that and shares its cached runs with the study's. Throws
+// InputError naming range_field or levels_field.
+std::vector<double> log_spaced_factors(double lo, double hi, int levels, const std::string& range_field,
+                                       const std::string& levels_field);
+
+// Throws InputError for a bad plan (factors, offset, seeds, any scene).
+void validate_response_plan(const ResponsePlan& plan);
+
+ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log = {});
+
+}  // namespace demscale::slump
