@@ -103,8 +103,7 @@ void validate_response_plan(const ResponsePlan& plan) {
     for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, 0, {}}), plan.batch.force_dt);
 }
 
-ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log) {
-    const auto start = std::chrono::steady_clock::now();
+ResponseStudy plan_response_runs(const ResponsePlan& plan) {
     validate_response_plan(plan);
     ResponseStudy study;
     study.wet = plan.fine.wet;
@@ -115,6 +114,12 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
         study.coarse.emplace_back();
         for (double f : factors) study.coarse.back().push_back(ensemble(plan.fine, sf, f * gamma * std::pow(sf, plan.offset_exponent), plan.seeds));
     }
+    return study;
+}
+
+ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log) {
+    const auto start = std::chrono::steady_clock::now();
+    ResponseStudy study = plan_response_runs(plan);
     std::vector<StudyRun*> all;
     for (auto& e : study.fine)
         for (auto& r : e.runs) all.push_back(&r);

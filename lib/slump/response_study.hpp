@@ -62,6 +62,9 @@ std::vector<double> log_spaced_factors(double lo, double hi, int levels, const s
 // Throws InputError for a bad plan (factors, offset, seeds, any scene).
 void validate_response_plan(const ResponsePlan& plan);
 
+// The study's ensembles with their scenes, nothing run yet (what run_response_study runs).
+ResponseStudy plan_response_runs(const ResponsePlan& plan);
+
 ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log = {});
 
 }  // namespace demscale::slump

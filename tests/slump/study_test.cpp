@@ -14,6 +14,7 @@
 #include "slump/comparison.hpp"
 #include "slump/ensemble_verdict.hpp"
 #include "slump/fill.hpp"
+#include "slump/response_study.hpp"
 #include "slump/run_cache.hpp"
 
 using namespace demscale;
@@ -304,4 +305,42 @@ TEST_CASE("Ensemble verdict on constructed runs: PASS, FAIL, INCONCLUSIVE where 
         CHECK(dry.warnings[0].find("below the fine ensemble's own spread") != std::string::npos);
         CHECK(dry.warnings[1].find("no effect") != std::string::npos);
     }
+}
+
+TEST_CASE("Response curves: levels a factor apart exactly, coarse gamma-bar = f gamma S_f^offset, f = 1 is the study's own run",
+          "[slump][exponent]") {
+    const auto f = log_spaced_factors(0.25, 4, 5, "--range", "--levels");
+    CHECK(f == std::vector<double>{0.25, 0.5, 1, 2, 4});  // exactly: cached runs are found by the scene's bits
+    CHECK(log_spaced_factors(0.5, 4, 4, "--range", "--levels") == std::vector<double>{0.5, 1, 2, 4});
+    CHECK_THROWS_AS(log_spaced_factors(4, 1, 5, "--range", "--levels"), InputError);
+    CHECK_THROWS_AS(log_spaced_factors(0.5, 4, 2, "--range", "--levels"), InputError);
+
+    ResponsePlan plan;
+    plan.fine = kantro();
+    plan.scale_factors = {1.4, 1.96};
+    plan.factors = f;
+    plan.seeds = 3;
+    const auto study = plan_response_runs(plan);
+    const double gamma = plan.fine.liquid.surface_tension_n_per_m, r = plan.fine.radius_m;
+    REQUIRE(study.fine.size() == 5);
+    REQUIRE(study.coarse.size() == 2);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        CHECK(study.fine[i].gamma == f[i] * gamma);
+        CHECK(study.fine[i].runs.size() == 3);
+        CHECK(study.fine[i].runs[2].scene.seed == plan.fine.seed + 2);
+        for (std::size_t s = 0; s < 2; ++s) {
+            const double sf = plan.scale_factors[s];
+            const auto& run = study.coarse[s][i].runs.front();
+            CHECK(run.scene.liquid.surface_tension_n_per_m == Approx(f[i] * gamma * sf * sf).epsilon(1e-14));
+            CHECK(run.scene.radius_m == Approx(sf * r).epsilon(1e-14));
+            CHECK(run.scene.liquid.moisture_content == plan.fine.liquid.moisture_content);  // V-hat held (Eq. 5)
+        }
+    }
+    // The level f = 1 with the scene's seed is the scene itself: the same cache key as check-exponent's fine run.
+    CHECK(scene_key(study.fine[2].runs.front().scene) == scene_key(plan.fine));
+    // Dry: one level per S_f, nothing to vary.
+    plan.fine.wet = false;
+    const auto dry = plan_response_runs(plan);
+    CHECK(dry.fine.size() == 1);
+    CHECK(dry.coarse.at(1).size() == 1);
 }
