@@ -1,6 +1,7 @@
 // Subcommands of the liquid-bridge study: bridge (one evaluation), bridge-table (generate the
 // tabulated exact model), bridge-error (every model against the exact solution), bench (costs).
 #include <iostream>
+#include <optional>
 #include <memory>
 
 #include "bridge/bridge_cost.hpp"
@@ -9,6 +10,7 @@
 #include "bridge/young_laplace.hpp"
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
+#include "io/bridge_table_file.hpp"
 #include "io/atomic_file.hpp"
 #include "report/bridge_error_files.hpp"
 #include "slump/slump_run.hpp"
@@ -53,7 +55,9 @@ int run_bridge(const Options& o) {
         if (!r.ok()) t.notes.push_back(r.message + ": no bridge, force 0");
         if (o.hhat < 0) t.notes.push_back("h^ < 0 (overlap) evaluated at contact, h^ = 0");
     } else {
-        const auto m = bridge::make_bridge_model(o.model, o.table);
+        std::optional<bridge::BridgeTable> table;
+        if (o.model == "table") table = io::read_bridge_table(o.table);
+        const auto m = bridge::make_bridge_model(o.model, table ? &*table : nullptr);
         const double hc = m->hhat_rupture(o.vhat, theta);
         const bool exists = o.hhat <= hc;
         row.insert(row.end(), {m->fhat(o.vhat, theta, o.hhat), hc, exists ? 1.0 : 0.0});
@@ -66,7 +70,7 @@ int run_bridge(const Options& o) {
 
 int run_bridge_table(const Options& o) {
     const auto table = bridge::BridgeTable::generate({}, progress_printer("bridge-table (V^, theta) nodes"));
-    io::write_file_atomically(o.out, table.to_csv());
+    io::write_file_atomically(o.out, io::bridge_table_csv(table));
     std::cout << "wrote " << o.out << "\n";
     return 0;
 }
@@ -148,8 +152,9 @@ int run_bench(const Options& o) {
     t.columns = {"model", "ns_per_evaluation", "relative_to_mikami1998", "evaluations_per_run"};
     const ContactAngle zero{Degrees{0}};
     double mikami_ns = 0;
+    const auto table = io::read_bridge_table(o.table);
     for (auto name : bridge::bridge_model_names()) {
-        const auto m = bridge::make_bridge_model(name, o.table);
+        const auto m = bridge::make_bridge_model(name, &table);
         const auto c = bridge::measure_evaluation_cost(*m, 0.05544, zero, o.seconds);
         if (name == "mikami1998") mikami_ns = c.ns_per_evaluation;
         t.rows.push_back({std::string(name), c.ns_per_evaluation, 0.0, static_cast<double>(c.evaluations_per_run)});

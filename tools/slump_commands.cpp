@@ -10,7 +10,7 @@
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
-#include "io/liggghts_export.hpp"
+#include "slump/liggghts_export.hpp"
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
 #include "slump/coarse_grain.hpp"
@@ -149,7 +149,7 @@ int run_export_liggghts(const Options& o) {
     const auto r = slump::run_slump(scene, slump_progress(nullptr, 0), o.force_dt, phases);
     const std::filesystem::path dir = o.out_dir;
     io::write_particle_state(dir / "settled.csv", r.final_state);
-    for (const auto& f : io::export_liggghts(scene, r.final_state, dir)) std::cout << "wrote " << f.string() << "\n";
+    for (const auto& f : slump::export_liggghts(scene, r.final_state, dir)) std::cout << "wrote " << f.string() << "\n";
     std::cout << "wrote " << (dir / "settled.csv").string() << "\n";
     if (scene.wet) std::cerr << "note: LIGGGHTS-PUBLIC has no Mikami bridge; the deck is dry\n";
     return 0;

@@ -137,14 +137,17 @@ private:
 
 std::span<const std::string_view> bridge_model_names() { return names; }
 
-std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const std::string& table_path) {
+std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const BridgeTable* table) {
     if (name == "exact") return std::make_unique<ExactModel>();
     if (name == "mikami1998") return std::make_unique<MikamiModel>(MikamiVariant::mikami1998);
     if (name == "yun-park-2017") return std::make_unique<MikamiModel>(MikamiVariant::yun_park_2017);
     if (name == "willett") return std::make_unique<WillettModel>(true);
     if (name == "willett-simple") return std::make_unique<WillettModel>(false);
     if (name == "toroidal") return std::make_unique<ToroidalModel>();
-    if (name == "table") return std::make_unique<TableModel>(BridgeTable::load(table_path));
+    if (name == "table") {
+        if (!table) throw InputError("--table", "(none)", "a tabulated bridge (demscale bridge-table writes one)");
+        return std::make_unique<TableModel>(*table);
+    }
     std::string all;
     for (auto n : names) all += (all.empty() ? "" : ", ") + std::string(n);
     throw InputError("--model", "\"" + std::string(name) + "\"",

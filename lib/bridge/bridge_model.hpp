@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "bridge/bridge_table.hpp"
 #include "core/contact_angle.hpp"
 
 namespace demscale::bridge {
@@ -22,8 +23,9 @@ public:
 };
 
 // Names: exact, mikami1998, yun-park-2017, willett, willett-simple, toroidal, table.
-// "table" reads the tabulated exact solution from table_path. Throws InputError for other names.
-std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const std::string& table_path = "");
+// "table" interpolates the given tabulated exact solution (io::read_bridge_table reads one); it
+// throws InputError without one. Throws InputError for other names.
+std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const BridgeTable* table = nullptr);
 std::span<const std::string_view> bridge_model_names();
 
 }  // namespace demscale::bridge

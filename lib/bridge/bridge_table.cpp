@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "bridge/young_laplace.hpp"
 #include "core/input_error.hpp"
-#include "io/csv_reader.hpp"
 
 namespace demscale::bridge {
 
@@ -75,65 +72,29 @@ BridgeTable BridgeTable::generate(const BridgeTableGrid& g, const std::function<
     return table;
 }
 
-std::string BridgeTable::to_csv() const {
-    std::ostringstream out;
-    out << "# demscale tabulated Young-Laplace bridge between equal spheres (generate: demscale bridge-table)\n"
-        << "# fhat = F/(2 pi R gamma); hhat = full gap / R; x = hhat/hhat_rupture = (1 - cos(pi t))/2, t uniform\n"
-        << "# grid: vhat_min=" << format_number(grid_.vhat_min) << " vhat_max=" << format_number(grid_.vhat_max)
-        << " vhat_points=" << grid_.vhat_points << " theta_max_deg=" << format_number(grid_.theta_max_deg)
-        << " theta_points=" << grid_.theta_points << " gap_points=" << grid_.gap_points << "\n"
-        << "vhat,theta_deg,x,hhat_rupture,fhat\n";
+double BridgeTable::node_vhat(int iv) const {
     const auto& g = grid_;
-    for (int iv = 0; iv < g.vhat_points; ++iv)
-        for (int it = 0; it < g.theta_points; ++it)
-            for (int ix = 0; ix < g.gap_points; ++ix)
-                out << format_number(std::exp(std::log(g.vhat_min) + (std::log(g.vhat_max) - std::log(g.vhat_min)) * iv /
-                                                                          (g.vhat_points - 1)))
-                    << "," << format_number(g.theta_max_deg * it / (g.theta_points - 1)) << ","
-                    << format_number(gap_fraction(double(ix) / (g.gap_points - 1))) << ","
-                    << format_number(std::exp(ln_hc_[iv * g.theta_points + it])) << "," << format_number(std::exp(at(iv, it, ix)))
-                    << "\n";
-    return out.str();
+    return std::exp(std::log(g.vhat_min) + (std::log(g.vhat_max) - std::log(g.vhat_min)) * iv / (g.vhat_points - 1));
 }
+double BridgeTable::node_theta_deg(int it) const { return grid_.theta_max_deg * it / (grid_.theta_points - 1); }
+double BridgeTable::node_gap_fraction(int ix) const { return gap_fraction(double(ix) / (grid_.gap_points - 1)); }
+double BridgeTable::node_hhat_rupture(int iv, int it) const { return std::exp(ln_hc_[iv * grid_.theta_points + it]); }
+double BridgeTable::node_fhat(int iv, int it, int ix) const { return std::exp(at(iv, it, ix)); }
 
-BridgeTable BridgeTable::load(const std::string& path) {
-    const io::CsvData csv = io::read_csv_file(path);
+BridgeTable BridgeTable::from_nodes(const BridgeTableGrid& g, const std::vector<double>& fhat, const std::vector<double>& hhat_rupture) {
+    const std::size_t pairs = static_cast<std::size_t>(g.vhat_points) * g.theta_points;
+    if (g.vhat_points < 2 || g.theta_points < 2 || g.gap_points < 2 || !(g.vhat_min > 0) || !(g.vhat_max > g.vhat_min) ||
+        fhat.size() != pairs * g.gap_points || hhat_rupture.size() != pairs)
+        throw std::invalid_argument("bridge table: grid and node counts do not agree");
     BridgeTable t;
-    auto& g = t.grid_;
-    bool have_grid = false;
-    for (const auto& line : csv.comments) {
-        if (line.rfind("grid:", 0) != 0) continue;
-        std::istringstream in(line.substr(5));
-        std::string item;
-        while (in >> item) {
-            const auto eq = item.find('=');
-            const std::string key = item.substr(0, eq);
-            const double value = std::strtod(item.substr(eq + 1).c_str(), nullptr);
-            if (key == "vhat_min") g.vhat_min = value;
-            else if (key == "vhat_max") g.vhat_max = value;
-            else if (key == "vhat_points") g.vhat_points = static_cast<int>(value);
-            else if (key == "theta_max_deg") g.theta_max_deg = value;
-            else if (key == "theta_points") g.theta_points = static_cast<int>(value);
-            else if (key == "gap_points") g.gap_points = static_cast<int>(value);
-        }
-        have_grid = true;
+    t.grid_ = g;
+    for (double f : fhat) {
+        if (!(std::isfinite(f) && f > 0)) throw std::invalid_argument("bridge table: F^ not finite and > 0");
+        t.fhat_.push_back(std::log(f));  // interpolated in ln F^: its variation is multiplicative
     }
-    const std::size_t expected = static_cast<std::size_t>(g.vhat_points) * g.theta_points * g.gap_points;
-    if (!have_grid || g.vhat_points < 2 || g.theta_points < 2 || g.gap_points < 2 || !(g.vhat_min > 0) ||
-        !(g.vhat_max > g.vhat_min))
-        throw InputError(path, "(grid line)", "a '# grid: ...' line as written by demscale bridge-table");
-    if (csv.header != std::vector<std::string>{"vhat", "theta_deg", "x", "hhat_rupture", "fhat"} || csv.rows.size() != expected)
-        throw InputError(path, std::to_string(csv.rows.size()) + " rows",
-                         std::to_string(expected) + " rows of vhat,theta_deg,x,hhat_rupture,fhat");
-    t.fhat_.resize(expected);
-    t.ln_hc_.resize(static_cast<std::size_t>(g.vhat_points) * g.theta_points);
-    for (std::size_t i = 0; i < expected; ++i) {
-        const double hc = std::strtod(csv.rows[i][3].c_str(), nullptr), f = std::strtod(csv.rows[i][4].c_str(), nullptr);
-        if (!(std::isfinite(f) && f >= 0 && std::isfinite(hc) && hc > 0))
-            throw InputError(path + ":" + std::to_string(csv.row_lines[i]), csv.rows[i][4], "finite fhat >= 0 and hhat_rupture > 0");
-        if (!(f > 0)) throw InputError(path + ":" + std::to_string(csv.row_lines[i]), csv.rows[i][4], "fhat > 0 (stable bridges only)");
-        t.fhat_[i] = std::log(f);  // interpolated in ln F^: its variation is multiplicative
-        t.ln_hc_[i / g.gap_points] = std::log(hc);
+    for (double hc : hhat_rupture) {
+        if (!(std::isfinite(hc) && hc > 0)) throw std::invalid_argument("bridge table: h^_c not finite and > 0");
+        t.ln_hc_.push_back(std::log(hc));
     }
     return t;
 }

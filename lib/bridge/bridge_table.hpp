@@ -3,7 +3,7 @@
 // contact (F̂ falls fast there at small V̂) and at rupture, where F̂ has a square-root singularity in
 // the gap (the constant-volume family folds there). Interpolation: tricubic Catmull–Rom in ln F̂
 // (C¹, so DEM forces are continuous with continuous slopes); ln ĥ_c the same way in (ln V̂, θ).
-// Stored as CSV under data/.
+// Stored as CSV under data/ (read and written by io/bridge_table_file).
 #pragma once
 
 #include <functional>
@@ -27,9 +27,15 @@ public:
     // Solves the Young–Laplace problem at every node (tens of seconds); progress(done, total).
     // Throws std::runtime_error naming the node where the solver fails.
     static BridgeTable generate(const BridgeTableGrid& grid, const std::function<void(int, int)>& progress = {});
-    // Throws InputError for a missing or ill-formed file.
-    static BridgeTable load(const std::string& path);
-    std::string to_csv() const;
+    // From node values (as generate() computes them): F̂ at [v][θ][t] and ĥ_c at [v][θ], all
+    // finite and > 0. Throws std::invalid_argument for wrong sizes or values.
+    static BridgeTable from_nodes(const BridgeTableGrid& grid, const std::vector<double>& fhat, const std::vector<double>& hhat_rupture);
+    // The nodes: V̂ of index iv, θ (degrees) of it, ĥ/ĥ_c of ix, and the values there.
+    double node_vhat(int iv) const;
+    double node_theta_deg(int it) const;
+    double node_gap_fraction(int ix) const;
+    double node_hhat_rupture(int iv, int it) const;
+    double node_fhat(int iv, int it, int ix) const;
 
     const BridgeTableGrid& grid() const { return grid_; }
     bool covers(double vhat, ContactAngle theta) const;

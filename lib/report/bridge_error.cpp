@@ -12,6 +12,7 @@
 #include "bridge/young_laplace.hpp"
 #include "core/input_error.hpp"
 #include "core/version.hpp"
+#include "io/bridge_table_file.hpp"
 
 namespace demscale::report {
 
@@ -52,9 +53,9 @@ BridgeErrorGrid default_bridge_error_grid(bool quick) {
 
 BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::string& table_path, int map_vhat_points,
                                     int map_gap_points, double cost_seconds_per_run, const std::function<void(int, int)>& progress) {
+    const auto table = io::read_bridge_table(table_path);
     std::map<std::string, std::unique_ptr<bridge::BridgeModel>> models;
-    for (const auto& name : compared) models[name] = bridge::make_bridge_model(name, table_path);
-    const auto table = bridge::BridgeTable::load(table_path);  // for its coverage
+    for (const auto& name : compared) models[name] = bridge::make_bridge_model(name, &table);
 
     BridgeErrorStudy study;
     auto& pts = study.points;

@@ -1,12 +1,15 @@
 // The bridge-model interface and the tabulated exact model.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 #include "bridge/bridge_model.hpp"
 #include "bridge/bridge_table.hpp"
 #include "bridge/young_laplace.hpp"
 #include "core/input_error.hpp"
+#include "io/bridge_table_file.hpp"
 
 using namespace demscale;
 using namespace demscale::bridge;
@@ -16,9 +19,10 @@ const std::string table_path = DEMSCALE_SOURCE_DIR "/data/bridge_table.csv";
 }
 
 TEST_CASE("Every bridge model: zero beyond its rupture, contact value for overlap, finite inside", "[bridge][models]") {
+    const auto table = io::read_bridge_table(table_path);
     for (auto name : bridge_model_names()) {
         if (name == "exact") continue;  // covered by its own tests
-        const auto m = make_bridge_model(name, table_path);
+        const auto m = make_bridge_model(name, &table);
         for (double vhat : {1e-5, 1e-3, 0.05544, 0.3}) {
             for (double deg : {0.0, 30.0}) {
                 const ContactAngle theta{Degrees{deg}};
@@ -36,11 +40,12 @@ TEST_CASE("Every bridge model: zero beyond its rupture, contact value for overla
         }
     }
     CHECK_THROWS_WITH(make_bridge_model("wilett"), Catch::Matchers::Contains("did you mean willett"));
+    CHECK_THROWS_WITH(make_bridge_model("table"), Catch::Matchers::Contains("--table"));  // no table given
 }
 
 TEST_CASE("Tabulated model: error against the exact solver at random off-grid points below 0.5 %", "[bridge][table]") {
     // Measured on these 20 points (seed 42): worst 0.18 %, worst rupture-distance error 0.63 %.
-    const auto table = BridgeTable::load(table_path);
+    const auto table = io::read_bridge_table(table_path);
     std::mt19937 rng(42);
     std::uniform_real_distribution<double> u(0, 1);
     for (int i = 0; i < 20; ++i) {
@@ -56,8 +61,14 @@ TEST_CASE("Tabulated model: error against the exact solver at random off-grid po
     }
 }
 
+TEST_CASE("Tabulated model: the file written back from what was read is the same file, byte for byte", "[bridge][table]") {
+    std::ifstream in(table_path);
+    const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(io::bridge_table_csv(io::read_bridge_table(table_path)) == file);
+}
+
 TEST_CASE("Tabulated model: continuous across cells, refuses what it does not cover", "[bridge][table]") {
-    const auto table = BridgeTable::load(table_path);
+    const auto table = io::read_bridge_table(table_path);
     const ContactAngle theta{Degrees{10}};  // a theta node: the neighbouring cells meet here
     const auto pair = table.prepare(0.01, theta);
     for (int node = 1; node < table.grid().gap_points - 1; ++node) {
@@ -67,5 +78,5 @@ TEST_CASE("Tabulated model: continuous across cells, refuses what it does not co
     }
     CHECK_THROWS_AS(table.fhat(1e-6, theta, 0.0), InputError);
     CHECK_THROWS_AS(table.fhat(0.01, ContactAngle{Degrees{50}}, 0.0), InputError);
-    CHECK_THROWS_AS(BridgeTable::load(DEMSCALE_SOURCE_DIR "/data/table1.toml"), InputError);
+    CHECK_THROWS_AS(io::read_bridge_table(DEMSCALE_SOURCE_DIR "/data/table1.toml"), InputError);
 }

@@ -13,6 +13,7 @@
 #include "bridge/bridge_model.hpp"
 #include "bridge/mikami.hpp"
 #include "core/input_error.hpp"
+#include "io/bridge_table_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace demscale;
@@ -22,8 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double vhat = v[0], theta_deg = v[1], hhat = v[2];
     // Built once: the table model reads its file, and models keep per-pair coefficients.
     static const auto models = [] {
+        static const auto table = io::read_bridge_table(DEMSCALE_SOURCE_DIR "/data/bridge_table.csv");
         std::vector<std::unique_ptr<bridge::BridgeModel>> m;
-        for (auto name : bridge::bridge_model_names()) m.push_back(bridge::make_bridge_model(name, DEMSCALE_SOURCE_DIR "/data/bridge_table.csv"));
+        for (auto name : bridge::bridge_model_names()) m.push_back(bridge::make_bridge_model(name, &table));
         return m;
     }();
     for (const auto& model : models) {

@@ -1,4 +1,4 @@
-#include "io/liggghts_export.hpp"
+#include "slump/liggghts_export.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 #include "io/atomic_file.hpp"
 #include "slump/fill.hpp"
 
-namespace demscale::io {
+namespace demscale::slump {
 
 namespace fs = std::filesystem;
 
@@ -110,10 +110,10 @@ std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem:
     dem::Particles all = settled.mobile();
     const std::size_t pile = all.size();
     all.append(slump::floor_grains(scene));
-    write_file_atomically(out_dir / "particles.data", data_file(all));
-    write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
-    write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile));
+    io::write_file_atomically(out_dir / "particles.data", data_file(all));
+    io::write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
+    io::write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile));
     return {out_dir / "in.slump", out_dir / "particles.data", out_dir / "cone.stl"};
 }
 
-}  // namespace demscale::io
+}  // namespace demscale::slump

@@ -13,10 +13,10 @@
 #include "dem/particles.hpp"
 #include "slump/slump_scene.hpp"
 
-namespace demscale::io {
+namespace demscale::slump {
 
 // Writes in.slump, particles.data and cone.stl into out_dir; returns their paths.
 std::vector<std::filesystem::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled,
                                                    const std::filesystem::path& out_dir);
 
-}  // namespace demscale::io
+}  // namespace demscale::slump
