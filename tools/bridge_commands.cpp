@@ -25,10 +25,10 @@ struct Options {
     std::string model = "exact";
     std::string format = "text";
     std::string table = default_bridge_table;
-    std::string out = default_bridge_table;
+    std::string out = "bridge_table.csv";
     std::string out_dir = default_plots;
     bool quick = false, no_png = false, dem = false;
-    std::string scene = source_dir + "/data/scenes/small_wet.toml";
+    std::string scene = shipped("scenes/small_wet.toml");
     double seconds = 0.2;
 };
 
@@ -180,7 +180,7 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     one->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
 
     auto* gen = app.add_subcommand("bridge-table", "tabulate the exact bridge for --model table (about 20 s)");
-    gen->add_option("--out", o->out, "output CSV (default: data/bridge_table.csv)");
+    gen->add_option("--out", o->out, "output CSV (default: bridge_table.csv here; --table reads data/bridge_table.csv)");
 
     auto* err = app.add_subcommand("bridge-error", "every bridge model against the exact Young-Laplace solution");
     err->add_flag("--quick", o->quick, "a small grid (seconds)");

@@ -1,6 +1,7 @@
 #include "cli_common.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -10,8 +11,17 @@
 
 namespace demscale::cli {
 
+const std::string& data_dir() {
+    static const std::string dir = [] {
+        const std::string in_source = source_dir + "/data";
+        return std::filesystem::is_directory(in_source) ? in_source : std::string(DEMSCALE_INSTALLED_DATA_DIR);
+    }();
+    return dir;
+}
+
+// Shipped inputs are shown as data/…, wherever they live.
 std::string display_path(const std::string& path) {
-    const std::string root = source_dir + "/";
+    const std::string root = std::filesystem::path(data_dir()).parent_path().string() + "/";
     return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
 }
 

@@ -1,4 +1,4 @@
-// What every subcommand shares: default paths in the source tree, input parsing helpers, and the
+// What every subcommand shares: default paths (shipped inputs; outputs in the working folder), input parsing helpers, and the
 // Command shape (a CLI11 subcommand plus the function that runs it and returns the exit code).
 #pragma once
 
@@ -15,12 +15,17 @@
 namespace demscale::cli {
 
 inline const std::string source_dir = DEMSCALE_SOURCE_DIR;
-inline const std::string default_config = source_dir + "/data/table1.toml";
-inline const std::string default_plots = source_dir + "/plots";
-inline const std::string default_references = source_dir + "/data/reference";
-inline const std::string default_bridge_table = source_dir + "/data/bridge_table.csv";
-inline const std::string default_scene = source_dir + "/data/scenes/kantro_wet.toml";
-inline const std::string default_cache = source_dir + "/cache";  // finished slump runs, by scene key
+// The shipped inputs (table1.toml, scenes/, reference/, bridge_table.csv): the source tree's data/
+// when it exists (a build tree), else the installed copy, <prefix>/share/demscale/data.
+const std::string& data_dir();
+inline std::string shipped(const std::string& relative) { return data_dir() + "/" + relative; }
+inline const std::string default_config = shipped("table1.toml");
+inline const std::string default_references = shipped("reference");
+inline const std::string default_bridge_table = shipped("bridge_table.csv");
+inline const std::string default_scene = shipped("scenes/kantro_wet.toml");
+// Outputs go to the working folder, never into the source or install tree.
+inline const std::string default_plots = "plots";
+inline const std::string default_cache = "cache";  // finished slump runs, by scene key
 
 struct Command {
     CLI::App* app;

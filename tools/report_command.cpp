@@ -12,7 +12,7 @@ namespace {
 
 struct Options {
     std::string scene, config = default_config, exponents, sfs;
-    std::string out_dir = source_dir + "/report";
+    std::string out_dir = "report";
     std::string cache = default_cache;
     bool quick = false, no_cache = false;
     int jobs = 0, threads = 0, seeds = 0;  // seeds 0: 8, or 3 with --quick
@@ -36,7 +36,7 @@ std::string git_revision() {
 
 int run_report(const Options& o) {
     report::ReportOptions r;
-    r.scene_path = !o.scene.empty() ? o.scene : o.quick ? source_dir + "/data/scenes/small_wet.toml" : default_scene;
+    r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
     r.scene_label = display_path(r.scene_path);
     r.config_path = o.config;
     r.config_label = display_path(o.config);

@@ -81,6 +81,20 @@ case $case_name in
     head -c 8 "$work/plots/fig4.png" | od -An -c | grep -q 'P   N   G' || fail "fig4.png is not a PNG"
     ls -a "$work/plots" | grep -q '\.tmp' && fail "temporary file left behind"
     true ;;
+  outputs_in_working_folder)
+    # Run as a newcomer would, from an empty folder: outputs land there, not in the source tree.
+    mkdir "$work/empty" && cd "$work/empty" || fail "no folder"
+    before=$(stat -c %Y "$src/plots/fig3.png")
+    expect 0 'curves collapse' -- "$demscale" curves --figure 3 --no-png
+    [ -s "$work/empty/plots/fig3.csv" ] || fail "curves did not write plots/fig3.csv in the working folder"
+    [ "$(stat -c %Y "$src/plots/fig3.png")" = "$before" ] || fail "the source tree's plots/ changed"
+    expect 0 '^ok .*fig3.csv' -- "$demscale" regress
+    # An installed copy: the binary and the shipped data under the prefix, and it runs.
+    cmake --install "$(dirname "$demscale")" --prefix "$work/prefix" >/dev/null || fail "cmake --install failed"
+    [ -x "$work/prefix/bin/demscale" ] || fail "no installed binary"
+    [ -s "$work/prefix/share/demscale/data/table1.toml" ] || fail "no installed data"
+    [ -s "$work/prefix/share/demscale/data/scenes/kantro_wet.toml" ] || fail "no installed scenes"
+    expect 0 '^1,1,.*,ok$' -- "$work/prefix/bin/demscale" table --format csv ;;
   scaling_keep_gravity)
     expect 0 'gravity .* 1 +1 +scaled' -- "$demscale" scaling --length 4 --keep gravity,density
     grep -Eq 'time_step .* 2 +2 ' "$work/out" || fail "S_T should be 2 for S_L = 4 with g kept"
