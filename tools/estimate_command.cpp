@@ -16,8 +16,8 @@ namespace {
 struct Options {
     std::string scene = default_scene;
     std::string sfs = "1.4,1.96";
-    std::string range = "0.25,4";
-    int levels = 5, seeds = 8, resamples = 1000;
+    std::string range = "0.5,4";
+    int levels = 4, seeds = 8, resamples = 1000;
     double offset = 2;
     int jobs = 0, threads = 0;
     std::string cache = default_cache;

@@ -17,8 +17,9 @@ struct Options {
     bool quick = false, no_cache = false;
     int jobs = 0, threads = 0, seeds = 0;  // seeds 0: 8, or 3 with --quick
     bool estimate = false;                 // the measured-exponent section
-    std::string estimate_sf, estimate_range = "0.25,4";
-    int estimate_levels = 0;               // 0: 5, or 3 with --quick
+    std::string estimate_sf, estimate_range = "0.5,4";
+    int estimate_levels = 0;               // 0: 4, or 3 with --quick
+    int estimate_seeds = 0;                // 0: the report's --seeds
 };
 
 // The source tree's revision, with "+changes" when the working tree differs from it.
@@ -56,9 +57,10 @@ int run_report(const Options& o) {
         e.scale_factors = parse_number_list(!o.estimate_sf.empty() ? o.estimate_sf : o.quick ? "1.4" : "1.4,1.96", "--estimate-sf", 0, 100);
         const auto range = parse_number_list(o.estimate_range, "--estimate-range", 0, 1e6);
         if (range.size() != 2) throw InputError("--estimate-range", o.estimate_range, "two surface tension factors LO,HI with 0 < LO < HI");
-        e.factors = slump::log_spaced_factors(range[0], range[1], o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 5,
+        e.factors = slump::log_spaced_factors(range[0], range[1], o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 4,
                                               "--estimate-range", "--estimate-levels");
-        e.seeds = r.seeds;
+        if (o.estimate_seeds < 0) throw InputError("--estimate-seeds", std::to_string(o.estimate_seeds), "2 to 64");
+        e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : r.seeds;
         r.estimate = e;
     }
     const auto out = report::write_similarity_report(r, [](const std::string& s) { std::cerr << "report: " << s << "\n"; });
@@ -87,7 +89,8 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_flag("--estimate", o->estimate, "add the measured exponent: response curves and k-hat (costs the most; see estimate-exponent)");
     c->add_option("--estimate-sf", o->estimate_sf, "scale factors of the measured exponent (default 1.4,1.96; --quick: 1.4)");
     c->add_option("--estimate-range", o->estimate_range, "lowest and highest surface tension factor of its fine curve")->capture_default_str();
-    c->add_option("--estimate-levels", o->estimate_levels, "surface tension levels per curve, 3 to 12 (default 5; --quick: 3)");
+    c->add_option("--estimate-levels", o->estimate_levels, "surface tension levels per curve, 3 to 12 (default 4; --quick: 3)");
+    c->add_option("--estimate-seeds", o->estimate_seeds, "runs per level of the measured exponent (default: --seeds)");
     return {{c, [o] { return run_report(*o); }}};
 }
 

@@ -19,7 +19,7 @@ namespace demscale::slump {
 struct ResponsePlan {
     SlumpScene fine;
     std::vector<double> scale_factors = {1.40, 1.96};
-    std::vector<double> factors = {0.25, 0.5, 1, 2, 4};  // of the scene's γ, ascending (dry: ignored)
+    std::vector<double> factors = {0.5, 1, 2, 4};  // of the scene's γ, ascending (dry: ignored)
     double offset_exponent = 2;  // coarse levels at f·γ·S_f^offset
     int seeds = 8;
     BatchOptions batch;
