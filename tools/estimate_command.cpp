@@ -71,7 +71,7 @@ int run_estimate(const Options& o) {
     if (format != io::Format::json) {
         std::size_t runs = 0;
         for (const auto& e : study.fine) runs += e.runs.size();
-        std::cout << "\n" << runs << " fine runs (" << study.fine.size() << " levels x " << plan.seeds << " seeds); " << format_short(study.wall_s, 3)
+        std::cout << "\n" << runs << " fine runs (" << study.fine.size() << (study.fine.size() == 1 ? " level x " : " levels x ") << plan.seeds << " seeds); " << format_short(study.wall_s, 3)
                   << " s\n";
         for (const auto& e : study.estimates) std::cout << summary(e) << "\n";
         if (!study.wet) std::cout << "dry scene: no liquid to vary; the table is the dry control (coarse against fine)\n";
