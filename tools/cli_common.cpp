@@ -25,6 +25,22 @@ std::string display_path(const std::string& path) {
     return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
 }
 
+void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out) {
+    c->add_option("--jobs", o.jobs, "runs side by side (default: one per core)");
+    c->add_option("--threads", o.threads, "OpenMP threads per run (default: cores / jobs)");
+    c->add_option("--cache", o.cache, "folder of finished runs, reused by scene key (default: cache/)");
+    c->add_flag("--no-cache", o.no_cache, "run everything; read and write no cache");
+    c->add_option("--out", o.out_dir, "folder for " + what_out + " (default: plots/)");
+    c->add_option("--format", o.format, "text | markdown | csv | json")->capture_default_str();
+    c->add_flag("--no-png", o.no_png, "no figures (gnuplot scripts only)");
+    c->add_flag("--force-dt", o.force_dt, "accept a time step above 0.2 x the Rayleigh time");
+}
+
+BatchSettings batch_settings(const StudyRunOptions& o) {
+    const auto par = parallelism(o.jobs, o.threads);
+    return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt};
+}
+
 io::TableConfig load_config(const std::string& path) {
     auto c = io::load_table_config(path);
     c.source = display_path(c.source);

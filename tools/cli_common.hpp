@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,25 @@ struct Parallelism {
     int jobs, threads_per_job;
 };
 Parallelism parallelism(int jobs, int threads);
+
+// What every command that runs slump ensembles shares: how runs go side by side, the cache,
+// where tables and figures go. add_study_run_options registers the options; batch_options turns
+// them into the runner's settings.
+struct StudyRunOptions {
+    int jobs = 0, threads = 0;  // 0: from the machine
+    std::string cache = default_cache;
+    bool no_cache = false, no_png = false, force_dt = false;
+    std::string out_dir = default_plots;
+    std::string format = "text";
+};
+void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out);
+// The runner's settings from the options; Parallelism from jobs and threads as parallelism() does.
+struct BatchSettings {
+    int jobs, threads_per_job;
+    std::optional<std::string> cache_dir;
+    bool force_dt;
+};
+BatchSettings batch_settings(const StudyRunOptions& o);
 
 // Several tables in one output (a JSON array, or blocks separated by a blank line).
 std::string join_tables(const std::vector<io::Table>& tables, io::Format format);

@@ -19,11 +19,7 @@ struct Options {
     std::string range = "0.5,4";
     int levels = 4, seeds = 8, resamples = 1000;
     double offset = 2;
-    int jobs = 0, threads = 0;
-    std::string cache = default_cache;
-    bool no_cache = false, no_png = false, force_dt = false;
-    std::string out_dir = default_plots;
-    std::string format = "text";
+    StudyRunOptions run;
 };
 
 slump::ResponsePlan plan_from(const Options& o) {
@@ -37,10 +33,9 @@ slump::ResponsePlan plan_from(const Options& o) {
     plan.seeds = o.seeds;
     if (o.resamples < 100 || o.resamples > 100000) throw InputError("--resamples", std::to_string(o.resamples), "100 to 100000");
     plan.search.resamples = o.resamples;
-    const auto par = parallelism(o.jobs, o.threads);
-    plan.batch.jobs = par.jobs, plan.batch.threads_per_job = par.threads_per_job;
-    if (!o.no_cache) plan.batch.cache_dir = o.cache;
-    plan.batch.force_dt = o.force_dt;
+    const auto b = batch_settings(o.run);
+    plan.batch.jobs = b.jobs, plan.batch.threads_per_job = b.threads_per_job, plan.batch.force_dt = b.force_dt;
+    if (b.cache_dir) plan.batch.cache_dir = *b.cache_dir;
     return plan;
 }
 
@@ -62,11 +57,11 @@ std::string summary(const stats::ExponentEstimate& e) {
 int run_estimate(const Options& o) {
     const auto plan = plan_from(o);
     const auto study = slump::run_response_study(plan, [](const std::string& line) { std::cerr << "estimate: " << line << "\n"; });
-    const auto format = io::parse_format(o.format, "--format");
+    const auto format = io::parse_format(o.run.format, "--format");
     const std::string label = display_path(o.scene);
     std::vector<io::Table> tables = {report::response_table(study, label)};
     tables.push_back(study.wet ? report::exponent_estimate_table(study, label) : report::dry_baseline_table(study, label));
-    const auto files = report::write_estimate_files(study, label, o.out_dir, !o.no_png);
+    const auto files = report::write_estimate_files(study, label, o.run.out_dir, !o.run.no_png);
     std::cout << join_tables(tables, format);
     if (format != io::Format::json) {
         std::size_t runs = 0;
@@ -93,14 +88,7 @@ std::vector<Command> estimate_commands(CLI::App& app) {
     c->add_option("--offset", o->offset, "coarse levels at factor x gamma x S_f^offset")->capture_default_str();
     c->add_option("--seeds", o->seeds, "runs per level, 2 to 64")->capture_default_str();
     c->add_option("--resamples", o->resamples, "bootstrap resamples for the interval")->capture_default_str();
-    c->add_option("--jobs", o->jobs, "runs side by side (default: one per core)");
-    c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
-    c->add_option("--cache", o->cache, "folder of finished runs, reused by scene key (default: cache/)");
-    c->add_flag("--no-cache", o->no_cache, "run everything; read and write no cache");
-    c->add_option("--out", o->out_dir, "folder for the CSV files and the figure (default: plots/)");
-    c->add_option("--format", o->format, "text | markdown | csv | json")->capture_default_str();
-    c->add_flag("--no-png", o->no_png, "no figure (gnuplot script only)");
-    c->add_flag("--force-dt", o->force_dt, "accept a time step above 0.2 x the Rayleigh time");
+    add_study_run_options(c, o->run, "the CSV files and the figure");
     return {{c, [o] { return run_estimate(*o); }}};
 }
 

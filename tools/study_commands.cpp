@@ -23,12 +23,8 @@ struct Options {
     std::string sfs = "1.4,1.96,2.74,3.84";
     std::vector<std::string> scaled;
     std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
-    int jobs = 0, threads = 0;                                 // 0: from the machine
     int seeds = 8;
-    std::string cache = default_cache;
-    bool no_cache = false, no_png = false, force_dt = false;
-    std::string out_dir = default_plots;
-    std::string format = "text";
+    StudyRunOptions run;
 };
 
 slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) {
@@ -47,10 +43,9 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     tolerance(o.tol_spread, plan.tolerances.spread, "--tol-spread");
     tolerance(o.tol_profile, plan.tolerances.profile, "--tol-profile");
     // Default: one run per core, one thread each (runs differ in cost; the fine one starts first).
-    const auto par = parallelism(o.jobs, o.threads);
-    plan.jobs = par.jobs, plan.threads_per_job = par.threads_per_job;
-    if (!o.no_cache) plan.cache_dir = o.cache;
-    plan.force_dt = o.force_dt;
+    const auto b = batch_settings(o.run);
+    plan.jobs = b.jobs, plan.threads_per_job = b.threads_per_job, plan.force_dt = b.force_dt;
+    if (b.cache_dir) plan.cache_dir = *b.cache_dir;
     plan.seeds = o.seeds;
     return plan;
 }
@@ -62,12 +57,12 @@ slump::Study run(const slump::StudyPlan& plan) {
 // Prints the tables (text, markdown, csv or json) and the files written; returns the exit code:
 // with gate, 0 PASS, 1 FAIL, 4 INCONCLUSIVE (the verdict of every ensemble together).
 int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& study, const std::string& stem, bool gate) {
-    const auto format = io::parse_format(o.format, "--format");
+    const auto format = io::parse_format(o.run.format, "--format");
     const std::string label = display_path(o.scene);
     std::vector<io::Table> tables = {report::verdict_table(study, label), report::ensemble_table(study, label),
                                      report::similarity_groups_table(plan.exponents)};
     if (plan.exponents.size() > 1) tables.push_back(report::best_exponent_table(study, plan.scale_factors));
-    const auto files = report::write_study_files(study, label, o.out_dir, stem, !o.no_png);
+    const auto files = report::write_study_files(study, label, o.run.out_dir, stem, !o.run.no_png);
     const auto overall = study.overall();
     if (format == io::Format::json) {
         // One object: the overall verdict, then the tables (arrays of rows keyed by column).
@@ -102,14 +97,7 @@ void add_common(CLI::App* c, Options& o) {
     c->add_option("--tol-spread", o.tol_spread, "relative spread-d95 tolerance (default: the scene's [check])");
     c->add_option("--tol-profile", o.tol_profile, "profile tolerance, relative L2 shape distance (default: the scene's [check])");
     c->add_option("--seeds", o.seeds, "runs per ensemble: the fine one and each (S_f, k)")->capture_default_str();
-    c->add_option("--jobs", o.jobs, "runs side by side (default: one per core)");
-    c->add_option("--threads", o.threads, "OpenMP threads per run (default: cores / jobs)");
-    c->add_option("--cache", o.cache, "folder of finished runs, reused by scene key (default: cache/)");
-    c->add_flag("--no-cache", o.no_cache, "run everything; read and write no cache");
-    c->add_option("--out", o.out_dir, "folder for the table and figures (default: plots/)");
-    c->add_option("--format", o.format, "text | markdown | csv | json")->capture_default_str();
-    c->add_flag("--no-png", o.no_png, "no figures (gnuplot scripts only)");
-    c->add_flag("--force-dt", o.force_dt, "accept a time step above 0.2 x the Rayleigh time");
+    add_study_run_options(c, o.run, "the table and figures");
 }
 
 }  // namespace
