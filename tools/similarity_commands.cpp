@@ -60,8 +60,12 @@ int run_regress(const Options& o) {
     const auto outcome = report::run_regression(config, o.reference_dir, o.tolerance, o.update);
     std::cout << outcome.report;
     if (outcome.passed) return 0;
-    std::cout << "curves drifted from the references; if the change is intended, run "
-                 "`demscale regress --update` and commit data/reference/\n";
+    // The hint repeats the user's own inputs, so that updating rewrites the references they compared with.
+    std::string command = "demscale regress";
+    if (o.config != default_config) command += " --config '" + o.config + "'";
+    if (o.reference_dir != default_references) command += " --reference-dir '" + o.reference_dir + "'";
+    std::cout << "curves drifted from the references; if the change is intended, run `" << command << " --update` and commit "
+              << display_path(o.reference_dir) << "/\n";
     return 1;
 }
 

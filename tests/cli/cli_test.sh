@@ -27,7 +27,8 @@ case $case_name in
       "$src/data/reference/fig4.csv" >"$work/fig4.csv"
     expect 1 'FAIL .*fig4.csv: 1 of' -- "$demscale" regress --reference-dir "$work"
     grep -q 'sigma_pa' "$work/out" || fail "report does not name the drifting column"
-    grep -q '^ok .*fig3.csv' "$work/out" || fail "unperturbed fig3 should pass" ;;
+    grep -q '^ok .*fig3.csv' "$work/out" || fail "unperturbed fig3 should pass"
+    grep -qF "demscale regress --reference-dir '$work' --update" "$work/out" || fail "the update hint drops --reference-dir" ;;
   regress_missing_reference)
     expect 2 'reference = .*fig3.csv.*regress --update' -- "$demscale" regress --reference-dir "$work/none" ;;
   regress_ill_formed_reference)
