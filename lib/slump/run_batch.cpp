@@ -57,9 +57,26 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
             std::to_string(pending.size()) + " to run (" + std::to_string(o.jobs) + " at a time, " +
             std::to_string(o.threads_per_job) + " thread(s) each)");
 
-    double total_cost = 0, done_cost = 0;
-    for (const auto* r : pending) total_cost += expected_cost(*r, radius);
-    const auto runs_start = std::chrono::steady_clock::now();
+    // Time left: each run not started yet is predicted by the finished runs of its ensemble (the
+    // same scene but the seed: a standing column rests much later than a slumping one of the same
+    // size), else by its expected cost at the seconds per cost unit seen so far; over the jobs.
+    std::vector<std::string> ensemble(pending.size());
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+        SlumpScene s = pending[i]->scene;
+        s.seed = 0;
+        ensemble[i] = scene_key(s);
+    }
+    std::map<std::string, std::pair<double, int>> ensemble_wall;  // seconds summed, runs
+    double done_cost = 0, done_wall = 0;
+    auto seconds_left = [&](std::size_t first_unstarted) {
+        double left = 0;
+        for (std::size_t i = first_unstarted; i < pending.size(); ++i) {
+            const auto e = ensemble_wall.find(ensemble[i]);
+            left += e != ensemble_wall.end() ? e->second.first / e->second.second
+                                             : expected_cost(*pending[i], radius) * done_wall / std::max(done_cost, 1e-300);
+        }
+        return left / std::max(1, std::min<int>(o.jobs, static_cast<int>(pending.size())));
+    };
     std::mutex log_mutex;
     std::atomic<std::size_t> next{0}, finished{0}, interrupted{0};
     std::exception_ptr failure;
@@ -77,11 +94,11 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
                 r.result = run_slump(r.scene, {}, o.force_dt, phases);
                 if (cache) cache->store(r.key, r.result, o.threads_per_job), std::filesystem::remove(phases.checkpoint);
                 const std::lock_guard lock(log_mutex);
-                done_cost += expected_cost(r, radius);
+                done_cost += expected_cost(r, radius), done_wall += r.result.wall_s;
+                auto& e = ensemble_wall[ensemble[i]];
+                e.first += r.result.wall_s, ++e.second;
                 if (log) {
-                    // Time left: the elapsed time scaled by the expected cost still to run.
-                    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - runs_start).count();
-                    const double left = done_cost > 0 ? std::max(0.0, elapsed * (total_cost - done_cost) / done_cost) : 0;
+                    const double left = seconds_left(std::min<std::size_t>(next, pending.size()));
                     char b[300];
                     std::snprintf(b, sizeof b, "[%zu/%zu] %s: %zu particles, %zu steps, %.1f s%s; about %.0f s left", ++finished,
                                   pending.size(), describe(r).c_str(), r.result.particles, r.result.steps, r.result.wall_s,
