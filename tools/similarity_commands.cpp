@@ -102,13 +102,13 @@ std::vector<Command> similarity_commands(CLI::App& app) {
 
     auto* table = app.add_subcommand("table", "Table 1 and the derived similarity table for each radius and exponent");
     config(table);
-    table->add_option("--exponent", o->exponents, "surface-tension exponents k in gamma S_f^k (default from config: 1,3)");
+    table->add_option("--exponent,--exponents", o->exponents, "surface-tension exponents k in gamma S_f^k (default from config: 1,3)");
     format(table);
 
     auto* curves = app.add_subcommand("curves", "the curves of Fig. 3 (force) or Fig. 4 (stress): CSV, gnuplot script, PNG");
     curves->add_option("--figure", o->figure, "3 (F^ vs h^) or 4 (stress vs h^ per exponent)")->check(CLI::IsMember({3, 4}));
     config(curves);
-    curves->add_option("--exponent", o->exponents, "exponents for Fig. 4 (default from config: 1,3)");
+    curves->add_option("--exponent,--exponents", o->exponents, "exponents for Fig. 4 (default from config: 1,3)");
     curves->add_option("--out", o->out_dir, "output directory (default: plots/)");
     curves->add_flag("--no-png", o->no_png, "write CSV and gnuplot script only");
 

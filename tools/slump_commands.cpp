@@ -27,6 +27,7 @@ struct Options {
     std::string format = "text";
     std::string out_dir = default_plots;
     double vtk_every = 0;
+    int threads = 0;  // 0: OpenMP's default (all cores)
     bool force_dt = false, no_png = false, fixed_time = false, energy = false;
     std::string start;  // settled state to lift from
     std::string resume; // checkpoint of an interrupted run
@@ -54,6 +55,8 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
+    if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), ">= 1 (0: all cores)");
+    if (o.threads > 0) omp_set_num_threads(o.threads);
     const auto fine = slump::load_slump_scene(o.scene);
     auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
@@ -190,6 +193,7 @@ std::vector<Command> slump_commands(CLI::App& app) {
                     "book the energy ledger (every loss, wall work, balance) into slump_history.csv; about 10 % slower");
     slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");
     slump->add_option("--resume", o->resume, "continue an interrupted run from its checkpoint (OUT/slump.ckpt)");
+    slump->add_option("--threads", o->threads, "OpenMP threads (default: all cores)");
     slump->add_flag("--fixed-time", o->fixed_time, "run the whole spread time, no early stop at rest (engine comparisons)");
 
     auto* exp = app.add_subcommand("export", "write a scene for another DEM engine");

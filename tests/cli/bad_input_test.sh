@@ -50,6 +50,7 @@ scene_commands() {  # pattern file [no-pile: pile only measures, it never runs t
   refuse "$p" -- "$demscale" slump --scene "$f"
   refuse "$p" -- "$demscale" check-exponent --exponent 1 --scene "$f" --cache "$work/cache"
   refuse "$p" -- "$demscale" sweep --scene "$f" --cache "$work/cache"
+  refuse "$p" -- "$demscale" estimate-exponent --scene "$f" --cache "$work/cache"
   refuse "$p" -- "$demscale" report --scene "$f" --cache "$work/cache"
   refuse "$p" -- "$demscale" export liggghts --scene "$f"
   [ "$pile" = no-pile ] || refuse_no_out "$p" -- "$demscale" pile --scene "$f" --dump "$work/dump.txt"
@@ -135,7 +136,7 @@ case $class in
     refuse '--exponent = 25: accepted \(-20, 20\)' -- "$demscale" slump --scene "$small" --exponent 25
     refuse_no_out '--vhat = -1: accepted a finite number > 0' -- "$demscale" bridge --vhat -1
     refuse_no_out 'contact_angle_deg = 95: accepted \[0, 90\) degrees' -- "$demscale" bridge --theta 95
-    refuse_no_out 'basis.length = 0: accepted a finite number > 0' -- "$demscale" scaling --length 0
+    refuse_no_out '--length = 0: accepted a finite number > 0' -- "$demscale" scaling --length 0
     refuse '--tol-slump = -1: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-slump -1
     refuse '--seeds = -1: accepted 1 to 64' -- "$demscale" sweep --seeds -1
     refuse_no_out '--atol: value -1; accepted a finite number >= 0' -- "$demscale" regress --atol -1 ;;
@@ -155,7 +156,7 @@ case $class in
     refuse '--exponent = "-inf": accepted comma-separated numbers' -- "$demscale" curves --figure 3 --exponent -inf
     refuse_no_out '--vhat = nan: accepted a finite number > 0' -- "$demscale" bridge --vhat nan
     refuse_no_out '--hhat = nan: accepted a finite number' -- "$demscale" bridge --hhat nan
-    refuse_no_out 'basis.length = nan: accepted a finite number > 0' -- "$demscale" scaling --length nan
+    refuse_no_out '--length = nan: accepted a finite number > 0' -- "$demscale" scaling --length nan
     refuse_no_out '--rtol: value nan; accepted a finite number >= 0' -- "$demscale" regress --rtol nan
     refuse_no_out '--seconds: value nan; accepted a finite number > 0' -- "$demscale" bench --seconds nan
     refuse '--tol-profile = inf: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-profile inf

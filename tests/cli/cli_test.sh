@@ -99,7 +99,12 @@ case $case_name in
   scaling_keep_gravity)
     expect 0 'gravity .* 1 +1 +scaled' -- "$demscale" scaling --length 4 --keep gravity,density
     grep -Eq 'time_step .* 2 +2 ' "$work/out" || fail "S_T should be 2 for S_L = 4 with g kept"
-    expect 0 'BROKEN' -- "$demscale" scaling --length 4 --density 1 --time 4 --hold gravity ;;
+    expect 0 'BROKEN' -- "$demscale" scaling --length 4 --density 1 --time 4 --hold gravity
+    # Errors name the option the user typed.
+    expect 2 '--length = -1' -- "$demscale" scaling --length -1
+    expect 2 '--hold = "?gravty' -- "$demscale" scaling --length 4 --hold gravty
+    expect 0 'gamma_n_per_m_k2' -- "$demscale" table --exponents 2 --format csv
+    expect 2 '--threads = -1' -- "$demscale" slump --threads -1 ;;
   bridge_exact_and_above_rupture)
     expect 0 '^exact,0.05544,0,0,0.8186' -- "$demscale" bridge --vhat 0.05544 --hhat 0 --model exact --format csv
     expect 0 'beyond rupture.*no bridge, force 0' -- "$demscale" bridge --vhat 0.05544 --hhat 0.5 --model mikami1998
