@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "core/input_error.hpp"
+#include "slump/response_study.hpp"
 
 namespace demscale::cli {
 
@@ -66,6 +67,13 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 
 std::vector<double> parse_exponents(const std::string& text, const std::string& field) {
     return parse_number_list(text, field, -20, 20);
+}
+
+std::vector<double> parse_factor_range(const std::string& text, int levels, const std::string& range_field,
+                                       const std::string& levels_field) {
+    const auto range = parse_number_list(text, range_field, 0, 1e6);
+    if (range.size() != 2) throw InputError(range_field, text, "two surface tension factors LO,HI with 0 < LO < HI (e.g. 0.5,4)");
+    return slump::log_spaced_factors(range[0], range[1], levels, range_field, levels_field);
 }
 
 Parallelism parallelism(int jobs, int threads) {

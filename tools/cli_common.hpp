@@ -52,6 +52,9 @@ inline const CLI::Validator finite_non_negative = finite_from_zero(true);
 
 // "1,3" → {1, 3}; every item a number in (lo, hi). Throws InputError naming `field` and the range.
 std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi);
+// "LO,HI" and a level count → the log-spaced surface tension factors (slump::log_spaced_factors).
+std::vector<double> parse_factor_range(const std::string& text, int levels, const std::string& range_field,
+                                       const std::string& levels_field);
 // Exponents k: numbers in (−20, 20).
 std::vector<double> parse_exponents(const std::string& text, const std::string& field = "--exponent");
 

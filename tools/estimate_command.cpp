@@ -26,9 +26,7 @@ slump::ResponsePlan plan_from(const Options& o) {
     slump::ResponsePlan plan;
     plan.fine = slump::load_slump_scene(o.scene);
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
-    const auto range = parse_number_list(o.range, "--range", 0, 1e6);
-    if (range.size() != 2) throw InputError("--range", o.range, "two surface tension factors LO,HI with 0 < LO < HI (e.g. 0.25,4)");
-    plan.factors = slump::log_spaced_factors(range[0], range[1], o.levels, "--range", "--levels");
+    plan.factors = parse_factor_range(o.range, o.levels, "--range", "--levels");
     plan.offset_exponent = o.offset;
     plan.seeds = o.seeds;
     if (o.resamples < 100 || o.resamples > 100000) throw InputError("--resamples", std::to_string(o.resamples), "100 to 100000");

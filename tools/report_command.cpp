@@ -55,10 +55,8 @@ int run_report(const Options& o) {
     if (o.estimate) {
         slump::ResponsePlan e;
         e.scale_factors = parse_number_list(!o.estimate_sf.empty() ? o.estimate_sf : o.quick ? "1.4" : "1.4,1.96", "--estimate-sf", 0, 100);
-        const auto range = parse_number_list(o.estimate_range, "--estimate-range", 0, 1e6);
-        if (range.size() != 2) throw InputError("--estimate-range", o.estimate_range, "two surface tension factors LO,HI with 0 < LO < HI");
-        e.factors = slump::log_spaced_factors(range[0], range[1], o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 4,
-                                              "--estimate-range", "--estimate-levels");
+        e.factors = parse_factor_range(o.estimate_range, o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 4,
+                                       "--estimate-range", "--estimate-levels");
         if (o.estimate_seeds < 0) throw InputError("--estimate-seeds", std::to_string(o.estimate_seeds), "2 to 64");
         e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : r.seeds;
         r.estimate = e;

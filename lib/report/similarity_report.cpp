@@ -178,11 +178,12 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.cache_dir = o.cache_dir;
     plan.seeds = o.seeds;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
+    std::optional<slump::ResponsePlan> response;  // the measured exponent's, checked with the rest
     if (o.estimate) {
-        slump::ResponsePlan rp = *o.estimate;
-        rp.fine = scene;
-        rp.batch.jobs = o.jobs, rp.batch.threads_per_job = o.threads_per_job;
-        slump::validate_response_plan(rp);
+        response = *o.estimate;
+        response->fine = scene;
+        response->batch.jobs = o.jobs, response->batch.threads_per_job = o.threads_per_job, response->batch.cache_dir = o.cache_dir;
+        slump::validate_response_plan(*response);
     }
 
     Document doc;
@@ -301,10 +302,8 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     });
 
     Section estimate_section{"Measured exponent", {}};
-    if (o.estimate) timed("measured exponent", [&] {
-        slump::ResponsePlan rp = *o.estimate;
-        rp.fine = scene;
-        rp.batch.jobs = o.jobs, rp.batch.threads_per_job = o.threads_per_job, rp.batch.cache_dir = o.cache_dir;
+    if (response) timed("measured exponent", [&] {
+        const slump::ResponsePlan& rp = *response;
         const auto t0 = Clock::now();
         const auto est = slump::run_response_study(rp, [&](const std::string& s) { say("estimate: " + s); });
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -383,7 +382,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     if (caveats.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
     else caveat_section.blocks.push_back(BulletList{caveats});
     doc.sections = {verdict_section, inputs, similarity, curves, bridges, slump_section};
-    if (o.estimate) doc.sections.push_back(estimate_section);
+    if (response) doc.sections.push_back(estimate_section);
     doc.sections.push_back(caveat_section);
 
     ReportOutcome out;

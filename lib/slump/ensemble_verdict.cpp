@@ -15,7 +15,6 @@ std::vector<double> values(const std::vector<const SlumpResult*>& runs, double (
     for (const auto* r : runs) v.push_back(f(*r));
     return v;
 }
-double slump_over_height(const SlumpResult& r) { return r.slump() / r.initial_height; }
 double spread_d95(const SlumpResult& r) { return r.final.spread_d95; }
 
 std::vector<double> mean_shape(const std::vector<std::vector<double>>& shapes, const std::vector<std::size_t>& pick) {
@@ -60,6 +59,8 @@ NoiseFloor noise_floor(const std::vector<const SlumpResult*>& fine, const FineRe
     n.profile = stats::summarize(d);
     return n;
 }
+
+double slump_over_height(const SlumpResult& r) { return r.slump() / r.initial_height; }
 
 EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, const std::vector<const SlumpResult*>& coarse,
                                double sf, double exponent, const Tolerances& tol, double fine_radius, bool wet) {

@@ -45,6 +45,9 @@ struct EnsembleVerdict {
     std::vector<std::string> warnings;
 };
 
+// Slump over the fill height, s/H₀: the scale-free slump every comparison uses.
+double slump_over_height(const SlumpResult& r);
+
 // fine_radius: m. wet: false adds the note that k has no effect.
 EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, const std::vector<const SlumpResult*>& coarse,
                                double sf, double exponent, const Tolerances& tolerances, double fine_radius, bool wet);

@@ -15,8 +15,6 @@ bool ResponseEnsemble::all_at_rest() const {
 
 namespace {
 
-double slump_over_height(const SlumpResult& r) { return r.slump() / r.initial_height; }
-
 // The seeds' runs of one level: the scene at surface tension gamma (N/m; ignored dry).
 ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int seeds) {
     ResponseEnsemble e;
@@ -27,10 +25,8 @@ ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int s
     StudyRun run;
     run.grain = {sf, 0, {}};  // γ is set here already: k = 0 leaves it
     run.scene = sf == 1 ? level : coarse_grained(level, run.grain);
-    char label[120];
-    if (sf == 1) std::snprintf(label, sizeof label, "fine%s%.4g N/m", fine.wet ? ", γ = " : "", fine.wet ? gamma : 0.0);
-    else std::snprintf(label, sizeof label, "S_f = %g%s%.4g N/m", sf, fine.wet ? ", γ̄ = " : "", fine.wet ? gamma : 0.0);
-    run.label = fine.wet ? label : (sf == 1 ? "fine, dry" : "S_f = " + format_short(sf, 3) + ", dry");
+    const std::string where = sf == 1 ? "fine" : "S_f = " + format_short(sf, 3);
+    run.label = fine.wet ? where + (sf == 1 ? ", γ = " : ", γ̄ = ") + format_short(gamma, 4) + " N/m" : where + ", dry";
     for (int i = 0; i < seeds; ++i) {
         e.runs.push_back(run);
         e.runs.back().scene.seed = fine.seed + static_cast<unsigned>(i);
@@ -57,18 +53,20 @@ stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& level
     return c;
 }
 
-DryBaseline baseline(double sf, const ResponseEnsemble& fine, const ResponseEnsemble& coarse) {
-    std::vector<double> fs, cs, fd, cd;
-    for (const auto& r : fine.runs) fs.push_back(slump_over_height(r.result)), fd.push_back(r.result.final.spread_d95);
-    for (const auto& r : coarse.runs) cs.push_back(slump_over_height(r.result)), cd.push_back(r.result.final.spread_d95);
+std::vector<const SlumpResult*> results(const ResponseEnsemble& e) {
+    std::vector<const SlumpResult*> r;
+    for (const auto& run : e.runs) r.push_back(&run.result);
+    return r;
+}
+
+DryBaseline baseline(double sf, const ResponseEnsemble& fine, const ResponseEnsemble& coarse, const SlumpScene& scene) {
+    const auto f = results(fine), c = results(coarse);
     DryBaseline b;
     b.sf = sf;
-    b.slump_over_height = stats::difference_interval(fs, cs);
-    const double d_mean = stats::summarize(fd).mean;
-    const stats::Interval d = stats::difference_interval(fd, cd);
-    b.spread_relative = {d.low / d_mean, d.high / d_mean};
-    b.slump_noise = stats::summarize(fs).sd;
-    b.spread_noise = stats::summarize(fd).sd / d_mean;
+    b.criteria = judge_ensemble(f, c, sf, 0, scene.tolerances, scene.radius_m, false).criteria;
+    double reach = 0;
+    for (const auto* r : f) reach = std::max(reach, r->final.spread_max);
+    b.noise = noise_floor(f, fine_reference(f, scene.radius_m, reach));
     return b;
 }
 
@@ -141,7 +139,7 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
         study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
     } else {
         for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
-            study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front()));
+            study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front(), plan.fine));
     }
     study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return study;

@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "slump/ensemble_verdict.hpp"
 #include "slump/run_batch.hpp"
 #include "stats/curve_shift.hpp"
 #include "stats/summary.hpp"
@@ -35,11 +36,12 @@ struct ResponseEnsemble {
 };
 
 // Coarse − fine at one S_f on a dry scene: the baseline error of coarse-graining the dry laws.
+// The intervals are judge_ensemble's (slump, spread, profile; its verdicts are not used), the
+// noise the fine ensemble's own (noise_floor).
 struct DryBaseline {
     double sf = 1;
-    stats::Interval slump_over_height;  // 95 % Welch interval of mean(s̄/H̄₀) − mean(s/H₀)
-    stats::Interval spread_relative;    // of mean(d̄95) − mean(d95), over the fine mean
-    double slump_noise = 0, spread_noise = 0;  // the fine ensemble's sd of each (spread: relative)
+    std::vector<Criterion> criteria;  // slump, spread, profile
+    NoiseFloor noise;
 };
 
 struct ResponseStudy {

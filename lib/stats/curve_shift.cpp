@@ -45,22 +45,15 @@ double interpolate(const MeanCurve& f, double x) {
     return f.y[0] + t * (f.y[1] - f.y[0]);
 }
 
-// Σ (ȳ − y_fine(x − k ln S_f))² over every level of the coarse curves, and how many levels.
-double squared_residual(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, double k, std::size_t& count) {
+// What k̂ minimises: Σ (ȳ − y_fine(x − k ln S_f))² over every level of the coarse curves.
+double objective(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, double k) {
     double sum = 0;
-    count = 0;
     for (const auto& c : coarse)
         for (std::size_t j = 0; j < c.x.size(); ++j) {
             const double r = c.y[j] - interpolate(fine, c.x[j] - k * c.log_sf);
             sum += r * r;
-            ++count;
         }
     return sum;
-}
-
-double objective(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, double k) {
-    std::size_t count = 0;
-    return squared_residual(fine, coarse, k, count);
 }
 
 // The k in [k_min, k_max] that minimises the objective: the best point of a grid of 0.05, then
@@ -96,9 +89,10 @@ Shift best_shift(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, co
 
 ResponseCurve resampled(const ResponseCurve& c, std::mt19937_64& rng) {
     ResponseCurve r = c;
-    for (auto& l : r.levels) {
-        std::uniform_int_distribution<std::size_t> pick(0, l.y.size() - 1);
-        for (auto& y : l.y) y = c.levels[static_cast<std::size_t>(&l - r.levels.data())].y[pick(rng)];
+    for (std::size_t i = 0; i < c.levels.size(); ++i) {
+        const auto& seeds = c.levels[i].y;
+        std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
+        for (auto& y : r.levels[i].y) y = seeds[pick(rng)];
     }
     return r;
 }
@@ -123,10 +117,9 @@ double interpolate_response(const ResponseCurve& fine, double x) { return interp
 double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse, double k) {
     check(fine, coarse);
     std::vector<MeanCurve> c;
-    for (const auto& curve : coarse) c.push_back(means_of(curve));
-    std::size_t count = 0;
-    const double sum = squared_residual(means_of(fine), c, k, count);
-    return std::sqrt(sum / static_cast<double>(count));
+    std::size_t levels = 0;
+    for (const auto& curve : coarse) c.push_back(means_of(curve)), levels += curve.levels.size();
+    return std::sqrt(objective(means_of(fine), c, k) / static_cast<double>(levels));
 }
 
 std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse,
