@@ -39,11 +39,29 @@ std::vector<CurvePoint> compute_curves(const io::TableConfig& c, Figure figure, 
     return out;
 }
 
+namespace {
+// The exponents the points were computed for, in order of first appearance.
+std::vector<double> exponents_of(const std::vector<CurvePoint>& points) {
+    std::vector<double> ks;
+    for (const auto& q : points)
+        if (std::find(ks.begin(), ks.end(), q.exponent) == ks.end()) ks.push_back(q.exponent);
+    return ks;
+}
+}  // namespace
+
 io::Table curves_table(const io::TableConfig& c, Figure figure, const std::vector<CurvePoint>& points) {
     io::Table t;
     t.title = figure == Figure::force ? "Fig. 3: dimensionless capillary force vs dimensionless gap"
                                       : "Fig. 4: bridge stress vs dimensionless gap for each surface-tension exponent";
     t.metadata = study_metadata(c, table1_particles(c));
+    auto list = [](const std::vector<double>& xs, double unit) {
+        std::string text;
+        for (double x : xs) text += (text.empty() ? "" : ", ") + format_number(x / unit);
+        return text;
+    };
+    t.metadata.emplace_back("radii_mm", list(c.radii_m, 1e-3));
+    if (figure == Figure::stress) t.metadata.emplace_back("exponents", list(exponents_of(points), 1));
+    t.metadata.emplace_back("gap_grid", "hhat from 0 to " + format_number(c.curve_hhat_max) + ", " + std::to_string(c.curve_points) + " points");
     t.metadata.emplace_back("columns",
                             "hhat = full gap / R; f_over_pi_r_gamma = F/(pi R gamma); force_n and sigma_pa use "
                             "gamma = gamma0 S_f^exponent, sigma = F/(pi R^2) (Eq. 11)" +

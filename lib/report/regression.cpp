@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
 #include "core/input_error.hpp"
@@ -17,11 +18,45 @@ bool parse_double(const std::string& s, double& x) {
     x = std::strtod(s.c_str(), &end);
     return end == s.c_str() + s.size();
 }
+
+// "key: value" metadata lines, in file order.
+std::vector<std::pair<std::string, std::string>> metadata(const io::CsvData& d) {
+    std::vector<std::pair<std::string, std::string>> m;
+    for (const auto& line : d.comments)
+        if (const auto colon = line.find(": "); colon != std::string::npos) m.emplace_back(line.substr(0, colon), line.substr(colon + 2));
+    return m;
+}
+
+std::vector<MetadataChange> compare_metadata(const io::CsvData& ref, const io::CsvData& got) {
+    const auto a = metadata(ref), b = metadata(got);
+    auto find = [](const auto& m, const std::string& key) -> std::optional<std::string> {
+        for (const auto& [k, v] : m)
+            if (k == key) return v;
+        return std::nullopt;
+    };
+    std::vector<MetadataChange> changes;
+    auto note = [&](const std::string& key) {
+        const auto x = find(a, key), y = find(b, key);
+        if (x == y) return;
+        for (const auto& c : changes)
+            if (c.key == key) return;
+        changes.push_back({key, x.value_or("(absent)"), y.value_or("(absent)"), key == "demscale" || key == "inputs"});
+    };
+    for (const auto& [k, v] : a) note(k);
+    for (const auto& [k, v] : b) note(k);
+    std::stable_partition(changes.begin(), changes.end(), [](const MetadataChange& c) { return !c.informational; });
+    return changes;
+}
 }  // namespace
+
+bool Comparison::inputs_changed() const {
+    return std::any_of(changed_inputs.begin(), changed_inputs.end(), [](const MetadataChange& m) { return !m.informational; });
+}
 
 Comparison compare_csv(const io::CsvData& ref, const io::CsvData& got, const Tolerance& tol,
                        const std::vector<std::string>& key_columns) {
     Comparison c;
+    c.changed_inputs = compare_metadata(ref, got);
     if (ref.header != got.header) {
         std::string missing, extra;
         for (const auto& h : ref.header)
@@ -64,13 +99,25 @@ Comparison compare_csv(const io::CsvData& ref, const io::CsvData& got, const Tol
             d.column = ref.header[j];
             d.reference = a;
             d.computed = b;
-            for (std::size_t kj : key_index) d.key += (d.key.empty() ? "" : " ") + ref.header[kj] + "=" + ref.rows[i][kj];
+            for (std::size_t kj : key_index) {  // numbers as people write them: 3.84, not 3.8400000000000003
+                double v;
+                const std::string& cell = ref.rows[i][kj];
+                d.key += (d.key.empty() ? "" : " ") + ref.header[kj] + "=" + (parse_double(cell, v) ? format_short(v, 10) : cell);
+            }
             if (c.values_compared++ == 0 || d.excess > c.worst.excess) c.worst = d;
             if (d.excess > 1.0) c.failures.push_back(std::move(d));
         }
     }
     std::stable_sort(c.failures.begin(), c.failures.end(),
                      [](const Deviation& x, const Deviation& y) { return x.excess > y.excess; });
+    for (const auto& d : c.failures) {  // worst first, so each column's first failure is its largest excess
+        auto it = std::find_if(c.columns.begin(), c.columns.end(), [&](const ColumnSummary& s) { return s.column == d.column; });
+        if (it == c.columns.end()) c.columns.push_back({d.column, 0, d}), it = c.columns.end() - 1;
+        ++it->outside;
+        if (d.relative > it->largest.relative) it->largest = d;
+    }
+    std::stable_sort(c.columns.begin(), c.columns.end(),
+                     [](const ColumnSummary& x, const ColumnSummary& y) { return x.outside > y.outside; });
     return c;
 }
 
@@ -79,19 +126,34 @@ std::string describe(const Comparison& c, const std::string& name, const Toleran
     char buf[512];
     const std::string tolerance_text = "|computed - reference| <= " + format_number(tol.absolute) + " + " +
                                        format_number(tol.relative) + " |reference|";
+    const bool failed = !c.passed();
+    if (!c.changed_inputs.empty()) {
+        out << (failed ? "FAIL " : "ok   ") << name << ": " << (c.inputs_changed() ? "inputs changed" : "metadata changed")
+            << " (reference -> computed)\n";
+        for (const auto& m : c.changed_inputs)
+            out << "  " << m.key << ": " << m.reference << " -> " << m.computed << (m.informational ? "  (informational)" : "") << "\n";
+    }
     if (!c.problem.empty()) {
         out << "FAIL " << name << ": " << c.problem << "\n";
         return out.str();
     }
-    if (c.passed()) {
-        std::snprintf(buf, sizeof buf, "ok   %s: %zu values within %s (worst: %s, %s, |d| = %.3g, %.3g of tolerance)\n",
-                      name.c_str(), c.values_compared, tolerance_text.c_str(), c.worst.key.c_str(),
+    if (c.failures.empty()) {
+        std::snprintf(buf, sizeof buf, "%s %s: %zu values within %s (worst: %s, %s, |d| = %.3g, %.3g of tolerance)\n",
+                      failed ? "    " : "ok  ", name.c_str(), c.values_compared, tolerance_text.c_str(), c.worst.key.c_str(),
                       c.worst.column.c_str(), c.worst.absolute, c.worst.excess);
         out << buf;
         return out.str();
     }
     out << "FAIL " << name << ": " << c.failures.size() << " of " << c.values_compared << " values outside "
         << tolerance_text << "\n";
+    std::snprintf(buf, sizeof buf, "  %-20s %-9s %-14s %s\n", "column", "outside", "largest rel", "at");
+    out << buf;
+    for (const auto& s : c.columns) {
+        std::snprintf(buf, sizeof buf, "  %-20s %-9zu %-14.3g %s (line %d)\n", s.column.c_str(), s.outside, s.largest.relative,
+                      s.largest.key.c_str(), s.largest.line);
+        out << buf;
+    }
+    out << "  worst values:\n";
     std::snprintf(buf, sizeof buf, "  %-6s %-52s %-20s %-22s %-22s %-10s %-10s\n", "line", "row", "column", "reference",
                   "computed", "abs diff", "rel diff");
     out << buf;
