@@ -9,6 +9,7 @@
 
 #include "core/input_error.hpp"
 #include "slump/response_study.hpp"
+#include "slump/scene_similarity.hpp"
 
 namespace demscale::cli {
 
@@ -44,6 +45,24 @@ BatchSettings batch_settings(const StudyRunOptions& o) {
 
 io::TableConfig load_config(const std::string& path) {
     auto c = io::load_table_config(path);
+    c.source = display_path(c.source);
+    return c;
+}
+
+io::TableConfig similarity_inputs(const std::string& config_path, const std::string& scene_path) {
+    if (scene_path.empty()) return load_config(config_path.empty() ? default_config : config_path);
+    const auto scene = slump::load_slump_scene(scene_path);
+    if (!config_path.empty()) {
+        const auto config = load_config(config_path);
+        const auto differences = slump::differing_inputs(config, scene);
+        if (differences.empty()) return config;
+        std::string list;
+        for (const auto& d : differences) list += "\n  " + d;
+        throw InputError("--scene " + scene_path, std::to_string(differences.size()) + " input(s) differing from --config " +
+                                                      config_path + ":" + list + "\n",
+                         "the same particle, liquid and bridge in both, or only one of them");
+    }
+    auto c = slump::similarity_inputs(scene);
     c.source = display_path(c.source);
     return c;
 }

@@ -35,6 +35,9 @@ struct Command {
 
 // Inputs named relative to the source tree when they live in it, so outputs carry no machine's paths.
 io::TableConfig load_config(const std::string& path);
+// The inputs of the similarity table and Figs. 3-4: a Table-1 configuration, those a scene implies,
+// or both when they agree (else InputError listing the differing keys); neither: data/table1.toml.
+io::TableConfig similarity_inputs(const std::string& config_path, const std::string& scene_path);
 std::string display_path(const std::string& path);
 
 // Option checks that also refuse NaN and infinity (CLI11's own number checks let NaN through).

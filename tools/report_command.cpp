@@ -11,7 +11,7 @@ namespace demscale::cli {
 namespace {
 
 struct Options {
-    std::string scene, config = default_config, exponents, sfs;
+    std::string scene, config, exponents, sfs;
     std::string out_dir = "report";
     std::string cache = default_cache;
     bool quick = false, no_cache = false;
@@ -39,8 +39,8 @@ int run_report(const Options& o) {
     report::ReportOptions r;
     r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
     r.scene_label = display_path(r.scene_path);
-    r.config_path = o.config;
-    r.config_label = display_path(o.config);
+    // The similarity table follows the scene the user names; the shipped scenes go with the paper's Table 1.
+    r.similarity = similarity_inputs(o.config, o.scene);
     r.bridge_table_path = default_bridge_table;
     if (!o.exponents.empty()) r.exponents = parse_exponents(o.exponents, "--exponents");
     r.scale_factors = parse_number_list(!o.sfs.empty() ? o.sfs : o.quick ? "1.4" : "1.4,1.96,2.74,3.84", "--sf", 0, 100);
@@ -74,7 +74,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     auto o = std::make_shared<Options>();
     auto* c = app.add_subcommand("report", "the similarity report: inputs, Table 1, Figs. 3-4, bridge accuracy, slump study, caveats");
     c->add_option("--scene", o->scene, "slump scene (default: data/scenes/kantro_wet.toml; --quick: small_wet.toml)");
-    c->add_option("--config", o->config, "Table 1 configuration (default: data/table1.toml)");
+    c->add_option("--config", o->config, "Table 1 style inputs for the similarity table (default: the --scene's own; without --scene data/table1.toml)");
     c->add_option("--exponents", o->exponents, "candidate exponents k (default: the configuration's, 1,3)");
     c->add_option("--sf", o->sfs, "scale factors of the coarse runs (default 1.4,1.96,2.74,3.84; --quick: 1.4)");
     c->add_option("--out", o->out_dir, "folder for report.html, report.md and figures/ (default: report/)");

@@ -14,7 +14,7 @@ namespace demscale::cli {
 namespace {
 
 struct Options {
-    std::string config = default_config;
+    std::string config, scene;  // both empty: data/table1.toml
     std::string exponents;
     std::string format = "text";
     int figure = 3;
@@ -32,7 +32,7 @@ std::vector<double> exponents_or_config(const Options& o, const io::TableConfig&
 }
 
 int run_table(const Options& o) {
-    const auto config = load_config(o.config);
+    const auto config = similarity_inputs(o.config, o.scene);
     const auto format = io::parse_format(o.format, "--format");
     const auto ks = exponents_or_config(o, config);
     std::vector<io::Table> tables{report::similarity_table(config, ks)};
@@ -42,7 +42,7 @@ int run_table(const Options& o) {
 }
 
 int run_curves(const Options& o) {
-    const auto config = load_config(o.config);
+    const auto config = similarity_inputs(o.config, o.scene);
     const auto fig = o.figure == 3 ? report::Figure::force : report::Figure::stress;
     const auto files = report::write_curve_files(config, fig, exponents_or_config(o, config), o.out_dir, !o.no_png);
     std::cout << "wrote " << files.csv.string() << "\nwrote " << files.script.string() << "\n";
@@ -56,13 +56,14 @@ int run_curves(const Options& o) {
 }
 
 int run_regress(const Options& o) {
-    const auto config = load_config(o.config);
+    const auto config = similarity_inputs(o.config, o.scene);
     const auto outcome = report::run_regression(config, o.reference_dir, o.tolerance, o.update);
     std::cout << outcome.report;
     if (outcome.passed) return 0;
     // The hint repeats the user's own inputs, so that updating rewrites the references they compared with.
     std::string command = "demscale regress";
-    if (o.config != default_config) command += " --config '" + o.config + "'";
+    if (!o.config.empty()) command += " --config '" + o.config + "'";
+    if (!o.scene.empty()) command += " --scene '" + o.scene + "'";
     if (o.reference_dir != default_references) command += " --reference-dir '" + o.reference_dir + "'";
     std::cout << "curves drifted from the references; if the change is intended, run `" << command << " --update` and commit "
               << display_path(o.reference_dir) << "/\n";
@@ -97,18 +98,21 @@ int run_scaling(const Options& o) {
 
 std::vector<Command> similarity_commands(CLI::App& app) {
     auto o = std::make_shared<Options>();
-    auto config = [&](CLI::App* s) { s->add_option("--config", o->config, "TOML inputs (default: data/table1.toml)"); };
+    auto config = [&](CLI::App* s) {
+        s->add_option("--config", o->config, "Table 1 style inputs (default: data/table1.toml unless --scene)");
+        s->add_option("--scene", o->scene, "a slump scene: its particle, liquid, bridge and [similarity] section give the inputs");
+    };
     auto format = [&](CLI::App* s) { s->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str(); };
 
     auto* table = app.add_subcommand("table", "Table 1 and the derived similarity table for each radius and exponent");
     config(table);
-    table->add_option("--exponent,--exponents", o->exponents, "surface-tension exponents k in gamma S_f^k (default from config: 1,3)");
+    table->add_option("--exponent,--exponents", o->exponents, "surface-tension exponents k in gamma S_f^k (default from --config or --scene: 1,3)");
     format(table);
 
     auto* curves = app.add_subcommand("curves", "the curves of Fig. 3 (force) or Fig. 4 (stress): CSV, gnuplot script, PNG");
     curves->add_option("--figure", o->figure, "3 (F^ vs h^) or 4 (stress vs h^ per exponent)")->check(CLI::IsMember({3, 4}));
     config(curves);
-    curves->add_option("--exponent,--exponents", o->exponents, "exponents for Fig. 4 (default from config: 1,3)");
+    curves->add_option("--exponent,--exponents", o->exponents, "exponents for Fig. 4 (default from --config or --scene: 1,3)");
     curves->add_option("--out", o->out_dir, "output directory (default: plots/)");
     curves->add_flag("--no-png", o->no_png, "write CSV and gnuplot script only");
 

@@ -165,8 +165,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         work();
         timings.push_back({name, std::chrono::duration<double>(Clock::now() - t0).count()});
     };
-    auto config = io::load_table_config(o.config_path);
-    config.source = o.config_label;
+    const io::TableConfig& config = o.similarity;
     const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
     const auto scene = slump::load_slump_scene(o.scene_path);
     slump::StudyPlan plan;
@@ -192,7 +191,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
 
     Section similarity{"Similarity table", {}};
     timed("similarity table", [&] {
-        similarity.blocks.push_back(Paragraph{"Table 1 of Yun & Park (2017) recomputed from " + o.config_label +
+        similarity.blocks.push_back(Paragraph{"Table 1 of Yun & Park (2017) recomputed from " + config.source +
                                               ": every scaled radius, its mass, liquid volume (Eq. 5), Mikami coefficients "
                                               "(Eqs. 6-8), contact force and the stress of Eq. 11 for each exponent k."});
         similarity.blocks.push_back(TableBlock{similarity_table(config, ks)});

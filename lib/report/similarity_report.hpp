@@ -10,6 +10,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+
+#include "io/table_config.hpp"
 #include <vector>
 
 #include "slump/response_study.hpp"
@@ -18,7 +20,7 @@ namespace demscale::report {
 
 struct ReportOptions {
     std::string scene_path, scene_label;    // slump scene (label: as shown to the reader)
-    std::string config_path, config_label;  // Table 1 configuration (data/table1.toml)
+    io::TableConfig similarity;             // the similarity table's and Figs. 3-4's inputs (source: their file)
     std::string bridge_table_path;          // tabulated exact bridge (data/bridge_table.csv)
     std::vector<double> exponents;          // empty: the configuration's
     std::vector<double> scale_factors = {1.40, 1.96, 2.74, 3.84};

@@ -18,10 +18,11 @@ const std::map<std::string, std::vector<std::string_view>> schema = {
     {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
                  "rolling_model", "rolling_damping"}},
     {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
-                "bridge_variant", "viscosity_pa_s", "min_gap_ratio"}},
+                "bridge_variant", "rupture", "viscosity_pa_s", "min_gap_ratio"}},
     {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s", "rest_duration_s",
              "rest_quantile", "skin_mm"}},
     {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
+    {"similarity", {"scale_factors", "exponents"}},
 };
 void positive(double x, const std::string& f) { require_positive(x, f); }
 auto open_interval(double lo, double hi) {
@@ -107,6 +108,8 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.min_gap_ratio = r.checked("liquid.min_gap_ratio", 0.01, open_interval(0, 1));
     if (auto v = r.text("liquid.bridge_variant"))
         r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
+    if (auto v = r.text("liquid.rupture"))
+        r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });
 
     s.dt_s = r.checked("run.dt_s", 1e-5, positive);
     s.dt_field = r.where("run.dt_s", "run.dt_s");
@@ -123,6 +126,15 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.tolerances.slump = r.checked("check.slump_tolerance", 0.10, positive);
     s.tolerances.spread = r.checked("check.spread_tolerance", 0.10, positive);
     s.tolerances.profile = r.checked("check.profile_tolerance", 0.15, positive);
+    auto number_list = [&](const std::string& key, std::vector<double>& out, double lo, double hi) {
+        const auto xs = r.numbers(key);
+        if (!xs) return;
+        if (xs->empty()) throw InputError(r.where(key, key), "[]", "at least one number");
+        for (double x : *xs) r.check(key, [&] { require_in_open_interval(x, lo, hi, key); });
+        out = *xs;
+    };
+    number_list("similarity.scale_factors", s.table_scale_factors, 0, 100);
+    number_list("similarity.exponents", s.exponents, -20, 20);
 
     // Consistency: the particles must fit the cone; the fill must fit under its top.
     if (!(s.top_diameter_m < s.bottom_diameter_m))

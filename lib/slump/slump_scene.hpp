@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "bridge/mikami.hpp"
 #include "dem/material.hpp"
@@ -65,6 +66,10 @@ struct SlumpScene {
     double rest_quantile = 0.99;
     double skin_m = 0.3e-3;
     Tolerances tolerances;
+    // The similarity table and Figs. 3-4 this scene implies (table, curves, regress, report):
+    // the coarse radii S_f·R of Table 1 (S_f = 1.4^n) and the candidate exponents k of γ̄ = γ·S_f^k.
+    std::vector<double> table_scale_factors{3.8416, 2.744, 1.96, 1.4, 1.0};
+    std::vector<double> exponents{1.0, 3.0};
 };
 
 // The liquid per bridge V/R³ of the scene's wet contacts: Eq. 5 with the particle mass (the same

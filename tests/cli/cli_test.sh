@@ -29,6 +29,20 @@ case $case_name in
     grep -q 'sigma_pa' "$work/out" || fail "report does not name the drifting column"
     grep -q '^ok .*fig3.csv' "$work/out" || fail "unperturbed fig3 should pass"
     grep -qF "demscale regress --reference-dir '$work' --update" "$work/out" || fail "the update hint drops --reference-dir" ;;
+  regress_names_changed_input)
+    # A changed exponent in the inputs is named before any value: the first line under fig4's FAIL.
+    sed 's/^exponents = .*/exponents = [1.0, 2.5]/' "$src/data/table1.toml" >"$work/k25.toml"
+    expect 1 'FAIL .*fig4.csv: inputs changed' -- "$demscale" regress --config "$work/k25.toml"
+    grep -A1 'FAIL .*fig4.csv: inputs changed' "$work/out" | tail -1 | grep -q '^  exponents: 1, 3 -> 1, 2.5$' ||
+      fail "the changed exponent is not the first thing named"
+    grep -q 'exponent .*1010' "$work/out" || fail "no per-column summary"
+    grep -q '^ok .*fig3.csv' "$work/out" || fail "fig3 does not depend on the exponents and should pass"
+    # The same from a scene: a scene and a config that disagree are refused with the differing keys.
+    sed 's/^surface_tension_n_per_m = .*/surface_tension_n_per_m = 0.05/' "$src/data/scenes/kantro_wet.toml" >"$work/s.toml"
+    expect 2 'liquid.surface_tension_n_per_m = 0.074 in the config, liquid.surface_tension_n_per_m = 0.05 in the scene' -- \
+      "$demscale" table --config "$src/data/table1.toml" --scene "$work/s.toml"
+    expect 0 'inputs: .*s.toml' -- "$demscale" table --scene "$work/s.toml"
+    grep -Eq 'surface_tension_n_per_m: 0.05$' "$work/out" || fail "table --scene ignores the scene's liquid" ;;
   regress_missing_reference)
     expect 2 'reference = .*fig3.csv.*regress --update' -- "$demscale" regress --reference-dir "$work/none" ;;
   regress_ill_formed_reference)
@@ -96,6 +110,31 @@ case $case_name in
     [ -s "$work/prefix/share/demscale/data/table1.toml" ] || fail "no installed data"
     [ -s "$work/prefix/share/demscale/data/scenes/kantro_wet.toml" ] || fail "no installed scenes"
     expect 0 '^1,1,.*,ok$' -- "$work/prefix/bin/demscale" table --format csv ;;
+  installed_three_jobs_in_empty_folder)
+    # A newcomer's session: install, then from an empty folder (also HOME) a report for their own
+    # scene, a check-exponent and regress against references kept in that folder. Nothing outside
+    # the folder may change: not the prefix, not the source tree.
+    cmake --install "$(dirname "$demscale")" --prefix "$work/prefix" >/dev/null || fail "cmake --install failed"
+    mkdir "$work/mine" && cd "$work/mine" || fail "no folder"
+    touch "$work/marker"; sleep 1
+    export HOME="$work/mine" XDG_CACHE_HOME="$work/mine/.cache"
+    bin="$work/prefix/bin/demscale"
+    sed -e 's/^name = .*/name = "my-glass-beads"/' "$src/data/scenes/small_wet.toml" >my.toml
+    printf '[liquid]\nsurface_tension_n_per_m = 0.05\ncontact_angle_deg = 20\n[similarity]\nexponents = [1.0, 2.0]\n' >>my.toml
+    expect 0 'wrote report/report.html' -- "$bin" report --quick --scene my.toml --seeds 2
+    grep -q 'my-glass-beads' report/report.html || fail "the report is not about the user's scene"
+    grep -q 'recomputed from my.toml' report/report.html || fail "the similarity table is not the scene's"
+    grep -q 'surface_tension_n_per_m</b>: 0.05' report/report.html || fail "the similarity table ignores the scene's liquid"
+    "$bin" check-exponent --exponent 2 --scene my.toml --sf 1.4 --seeds 2 --no-png >"$work/out" 2>&1
+    case $? in 0 | 1 | 4) ;; *) cat "$work/out" >&2; fail "check-exponent failed" ;; esac
+    grep -q 'verdict: ' "$work/out" || fail "check-exponent gave no verdict"
+    grep -q '0 to run' "$work/out" || fail "check-exponent did not reuse the report's runs from cache/"
+    expect 0 'updated refs/fig4.csv: new' -- "$bin" regress --scene my.toml --reference-dir refs --update
+    expect 0 '^ok .*refs/fig4.csv' -- "$bin" regress --scene my.toml --reference-dir refs
+    changed_prefix=$(find "$work/prefix" -newer "$work/marker" | head -3)
+    [ -z "$changed_prefix" ] || fail "the install tree changed: $changed_prefix"
+    changed_src=$(find "$src" -newer "$work/marker" -not -path "$src/build*" -not -path "$src/.git*" -not -path "$work*" | head -3)
+    [ -z "$changed_src" ] || fail "the source tree changed: $changed_src" ;;
   scaling_keep_gravity)
     expect 0 'gravity .* 1 +1 +scaled' -- "$demscale" scaling --length 4 --keep gravity,density
     grep -Eq 'time_step .* 2 +2 ' "$work/out" || fail "S_T should be 2 for S_L = 4 with g kept"

@@ -10,6 +10,9 @@
 #include "slump/coarse_grain.hpp"
 #include "slump/fill.hpp"
 #include "slump/measurements.hpp"
+#include "io/table_config.hpp"
+#include "report/table1_particles.hpp"
+#include "slump/scene_similarity.hpp"
 #include "slump/slump_run.hpp"
 
 using namespace demscale;
@@ -196,4 +199,23 @@ TEST_CASE("Interrupted in each phase and resumed from the checkpoint: identical 
         CHECK_FALSE(std::filesystem::exists(ckpt));
     }
     CHECK(run_slump(poured).final_state.position == run_slump(poured).final_state.position);
+}
+
+TEST_CASE("A scene implies the similarity table's inputs, and a disagreeing config is caught", "[slump][scene]") {
+    auto scene = slump::load_slump_scene(std::string(DEMSCALE_SOURCE_DIR) + "/data/scenes/kantro_wet.toml");
+    const auto c = slump::similarity_inputs(scene);
+    REQUIRE(c.radii_m.size() == 5);
+    CHECK(c.radii_m[0] == Approx(std::pow(1.4, 4) * scene.radius_m));  // Table 1's S_f = 1.4^n
+    CHECK(c.radii_m[4] == Approx(scene.radius_m));
+    // Two routes to Eq. 5's liquid per bridge: the table's physical particle and the scene's own.
+    CHECK(report::table1_particles(c).physical.vhat == Approx(slump::bridge_vhat(scene)).epsilon(1e-12));
+    // The shipped Table 1 states no density (its masses imply one), and the same water: they agree.
+    const auto table1 = io::load_table_config(std::string(DEMSCALE_SOURCE_DIR) + "/data/table1.toml");
+    CHECK(slump::differing_inputs(table1, scene).empty());
+    scene.liquid.surface_tension_n_per_m = 0.05;
+    scene.bridge.rupture = bridge::RuptureLaw::lian1993;
+    const auto d = slump::differing_inputs(table1, scene);
+    REQUIRE(d.size() == 2);
+    CHECK(d[0].find("liquid.surface_tension_n_per_m = 0.074 in the config") == 0);
+    CHECK(d[1].find("liquid.rupture = lian1993 in the scene") != std::string::npos);
 }
