@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/input_error.hpp"
+#include "report/table_layout.hpp"
 
 namespace demscale::report {
 
@@ -39,9 +40,13 @@ std::string anchor(const std::string& title) {
     return a;
 }
 
-std::string cell_text(const io::Cell& c) {
-    if (const auto* s = std::get_if<std::string>(&c)) return *s;
-    return format_short(std::get<double>(c), 6);
+std::string cell_text(const io::Cell& c) { return document_cell(c); }
+
+// A table's numbers as the report shows them (Markdown renders strings as they are).
+io::Table with_document_numbers(io::Table t) {
+    for (auto& row : t.rows)
+        for (auto& c : row) c = document_cell(c);
+    return t;
 }
 
 std::string read_binary(const fs::path& file) {
@@ -52,7 +57,7 @@ std::string read_binary(const fs::path& file) {
     return s.str();
 }
 
-void html_table(std::ostringstream& h, const io::Table& t) {
+void html_table_part(std::ostringstream& h, const io::Table& t) {
     h << "<figure class=\"table\"><figcaption>" << escape_html(t.title) << "</figcaption>\n";
     if (!t.metadata.empty()) {
         h << "<ul class=\"meta\">";
@@ -74,16 +79,20 @@ void html_table(std::ostringstream& h, const io::Table& t) {
     h << "</figure>\n";
 }
 
+void html_table(std::ostringstream& h, const io::Table& t) {
+    for (const auto& part : fit_to_width(t)) html_table_part(h, part);
+}
+
 const char* style = R"(body{font-family:'DejaVu Sans',Helvetica,Arial,sans-serif;max-width:1180px;margin:2em auto;padding:0 1.5em;color:#1b1b1b;line-height:1.45}
 h1{border-bottom:2px solid #2166ac;padding-bottom:.3em}h2{margin-top:2em;border-bottom:1px solid #ccc;padding-bottom:.2em}
 nav ol{columns:2}table{border-collapse:collapse;font-size:.86em}th,td{border:1px solid #d0d0d0;padding:.25em .55em;vertical-align:top}
-th{background:#eef3f8;text-align:left}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+th{background:#eef3f8;text-align:left;overflow-wrap:anywhere;max-width:9em}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 tbody tr:nth-child(even){background:#fafafa}figure{margin:1.2em 0}figcaption{font-weight:bold;margin-bottom:.4em}
 figure.plot figcaption{font-weight:normal;font-style:italic;margin-top:.3em}.scroll{overflow-x:auto}
 ul.meta{font-size:.85em;color:#444;margin:.2em 0 .5em}p.note{font-size:.85em;color:#555;margin:.2em 0}
 img{max-width:100%;border:1px solid #e0e0e0}td.long{min-width:24em}
 figure.half{display:inline-block;width:49%;margin:.5em 0;vertical-align:top}figure.half figcaption{font-size:.85em}
-@media print{body{max-width:none;margin:0;padding:0}.scroll{overflow:visible}table{font-size:6.5pt;width:100%}
+@media print{body{max-width:none;margin:0;padding:0}.scroll{overflow:visible}table{font-size:7pt}
 th,td{padding:.1em .25em}th{overflow-wrap:anywhere}td.num{white-space:normal}td.long{min-width:0}figure,tr{break-inside:avoid}})";
 
 }  // namespace
@@ -121,7 +130,10 @@ std::string render_markdown(const Document& d, const fs::path& markdown_dir) {
                                    m << "\n";
                                    for (const auto& i : l.items) m << "- " << i << "\n";
                                },
-                               [&](const TableBlock& t) { m << "\n" << io::render(t.table, io::Format::markdown); },
+                               [&](const TableBlock& t) {
+                                   for (const auto& part : fit_to_width(t.table))
+                                       m << "\n" << io::render(with_document_numbers(part), io::Format::markdown);
+                               },
                                [&](const FigureBlock& f) {
                                    m << "\n![" << f.caption << "](" << fs::relative(f.png, markdown_dir).generic_string()
                                      << ")\n\n*" << f.caption << "*\n";

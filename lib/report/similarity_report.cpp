@@ -18,6 +18,7 @@
 #include "report/bridge_error.hpp"
 #include "report/bridge_error_files.hpp"
 #include "report/curve_files.hpp"
+#include "report/caveats.hpp"
 #include "report/document.hpp"
 #include "report/exponent_estimate_files.hpp"
 #include "report/similarity_table.hpp"
@@ -187,7 +188,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
 
     Document doc;
     doc.title = "demscale similarity report: " + scene.name;
-    std::vector<std::string> caveats;
+    std::vector<Caveat> caveats;
 
     Section similarity{"Similarity table", {}};
     timed("similarity table", [&] {
@@ -247,7 +248,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             ", so demscale defaults to the published form (" + std::string(bridge::to_string(scene.bridge.variant)) + " in this scene)."});
         for (const auto& w : bridge::check_validity(vhat, scene.liquid.contact_angle,
                                                     bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, scene.bridge)))
-            caveats.push_back("bridge model: " + w.message);
+            caveats.push_back({"the scene's bridge", "bridge model: " + w.message});
     });
 
     Section slump_section{"Slump test", {}};
@@ -285,9 +286,10 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {
             std::size_t moving = 0;
             for (const auto* r : runs) moving += !r->result.came_to_rest;
-            if (moving > 0) caveats.push_back("slump " + who + ": " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
-                                              " runs not at rest when the spread time limit ended");
-            for (const auto& w : runs.front()->warnings) caveats.push_back("slump " + who + ": geometry limits similarity: " + w);
+            if (moving > 0)
+                caveats.push_back({who, "slump: " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
+                                            " runs not at rest when the spread time limit ended"});
+            for (const auto& w : runs.front()->warnings) caveats.push_back({who, "slump geometry limits similarity: " + w});
         };
         std::vector<const slump::StudyRun*> fine = {&study.reference};
         for (const auto& r : study.replicas) fine.push_back(&r);
@@ -339,12 +341,12 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             format_short(joint.ci.high, 3) + "]" + (joint.determined ? "" : ", undetermined") + " (section Measured exponent)."});
         for (const auto& e : est.estimates)
             if (!e.determined)
-                caveats.push_back("measured exponent at " + (e.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(e.sf)) +
-                                  ": undetermined (no unique shift maps the curves onto each other)");
+                caveats.push_back({e.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(e.sf),
+                                   "measured exponent undetermined (no unique shift maps the curves onto each other)"});
         auto not_at_rest = [&](const slump::ResponseEnsemble& e) {
             if (!e.all_at_rest())
-                caveats.push_back("measured exponent: runs at S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) +
-                                  " N/m not all at rest");
+                caveats.push_back({"S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) + " N/m",
+                                   "measured exponent: runs not all at rest"});
         };
         for (const auto& e : est.fine) not_at_rest(e);
         for (const auto& levels : est.coarse)
@@ -378,8 +380,9 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     inputs.blocks.push_back(TableBlock{time_table});
 
     Section caveat_section{"Caveats", {}};
-    if (caveats.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
-    else caveat_section.blocks.push_back(BulletList{caveats});
+    const auto caveat_lines = grouped_caveats(caveats);
+    if (caveat_lines.empty()) caveat_section.blocks.push_back(Paragraph{"None found."});
+    else caveat_section.blocks.push_back(BulletList{caveat_lines});
     doc.sections = {verdict_section, inputs, similarity, curves, bridges, slump_section};
     if (response) doc.sections.push_back(estimate_section);
     doc.sections.push_back(caveat_section);
@@ -389,7 +392,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     out.markdown = o.out_dir / "report.md";
     io::write_file_atomically(out.markdown, render_markdown(doc, o.out_dir));
     io::write_file_atomically(out.html, render_html(doc));
-    out.caveats = caveats;
+    out.caveats = caveat_lines;
     out.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
     return out;
 }

@@ -79,10 +79,19 @@ std::string error_script(const std::string& stem, const std::vector<double>& sfs
     const std::string csv = stem + "_verdicts.csv";
     const auto& n = study.noise;
     const auto& tol = study.tolerances;
+    // Lines between exponents would draw a response nobody ran: join the points only for a sweep
+    // (exponents at most 0.5 apart), where the line follows what was run.
+    std::vector<double> ks;
+    for (const auto& v : study.verdicts) ks.push_back(v.exponent);
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    bool sweep = ks.size() > 2;
+    for (std::size_t i = 1; i < ks.size(); ++i) sweep = sweep && ks[i] - ks[i - 1] <= 0.5;
     std::ostringstream s;
     s << header(csv, "ensemble differences against the exponent k, with 95 % intervals", stem + "_error_vs_k.png", "1500,540")
       << "set multiplot layout 1,3 title \"Coarse ensembles against the fine ensemble, " << label
-      << "\\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd)}\" font ',13'\n"
+      << "\\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd)"
+      << (sweep ? "" : "; points not joined: only these exponents were run") << "}\" font ',13'\n"
       << "set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'\nset offsets graph 0.05, graph 0.05, 0, 0\n"
       << "set key below horizontal box\n";  // an opaque key inside would hide the band and the lines
     struct Panel {
@@ -105,7 +114,7 @@ std::string error_script(const std::string& stem, const std::vector<double>& sfs
         int i = 0;
         for (double sf : sfs) {
             s << ", \\\n  '" << csv << "' using " << at_sf(sf, "exponent", "\"" + c + "_pct\":\"" + c + "_low_pct\":\"" + c + "_high_pct\"")
-              << " with yerrorlines lw 2 lc " << i + 1 << " pt " << i + 5 << " title 'S_f = " << format_short(sf) << "'";
+              << (sweep ? " with yerrorlines lw 2 lc " : " with yerrorbars lw 2 ps 1.5 lc ") << i + 1 << " pt " << i + 5 << " title 'S_f = " << format_short(sf) << "'";
             ++i;
         }
         s << "\n";

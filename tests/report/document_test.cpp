@@ -4,9 +4,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "report/caveats.hpp"
 #include "report/document.hpp"
+#include "report/table_layout.hpp"
 
 using namespace demscale::report;
+namespace io = demscale::io;
+namespace report = demscale::report;
 namespace fs = std::filesystem;
 
 TEST_CASE("base64 matches RFC 4648 section 10", "[report][document]") {
@@ -47,4 +51,55 @@ TEST_CASE("HTML is self-contained and escaped, Markdown links figures relative t
     d.sections[0].blocks.push_back(FigureBlock{dir / "missing.png", "gone"});
     CHECK_THROWS_WITH(render_html(d), Catch::Matchers::Contains("missing.png"));
     fs::remove_all(dir);
+}
+
+TEST_CASE("Wide tables are transposed or split so that every cell appears once", "[report][layout]") {
+    // Few rows, many columns: transposed, cell (i, j) becomes (j, i).
+    io::Table wide;
+    wide.title = "wide";
+    wide.columns = {"radius_mm"};
+    for (int j = 1; j < 30; ++j) wide.columns.push_back("quantity_number_" + std::to_string(j));
+    for (double r : {3.84, 2.74, 1.0}) {
+        std::vector<io::Cell> row{r};
+        for (int j = 1; j < 30; ++j) row.push_back(r * 1000 + j);
+        wide.rows.push_back(row);
+    }
+    REQUIRE(report::estimated_width(wide) > 140);
+    const auto t = report::fit_to_width(wide);
+    REQUIRE(t.size() == 1);
+    CHECK(t[0].columns == std::vector<std::string>{"radius_mm", "3.84", "2.74", "1"});
+    REQUIRE(t[0].rows.size() == 29);
+    CHECK(std::get<std::string>(t[0].rows[4][0]) == "quantity_number_5");
+    CHECK(std::get<double>(t[0].rows[4][2]) == 2745);
+    // Repeated first cells cannot head columns: split instead, each part keyed by the first column.
+    wide.rows[1][0] = 3.84;
+    const auto parts = report::fit_to_width(wide);
+    REQUIRE(parts.size() > 1);
+    std::size_t cells = 0;
+    for (const auto& p : parts) {
+        CHECK(p.columns.front() == "radius_mm");
+        CHECK(report::estimated_width(p) <= 140);
+        for (std::size_t i = 0; i < p.rows.size(); ++i) CHECK(p.rows[i][0] == wide.rows[i][0]);
+        cells += (p.columns.size() - 1) * p.rows.size();
+    }
+    CHECK(cells == 29 * 3);
+    CHECK(parts.back().columns.back() == "quantity_number_29");
+    // A narrow table is left alone; numbers show 4 significant digits.
+    io::Table narrow;
+    narrow.columns = {"a", "b"};
+    narrow.rows = {{1.0, 0.000192733}};
+    CHECK(report::fit_to_width(narrow).size() == 1);
+    CHECK(report::document_cell(io::Cell(0.000192733)) == "0.0001927");
+    CHECK(report::document_cell(io::Cell(2195.17)) == "2195");
+}
+
+TEST_CASE("Caveats are grouped by kind, listing whom each affects", "[report][layout]") {
+    const auto lines = report::grouped_caveats({{"fine", "top opening 4.3 diameters wide (< 5)"},
+                                                {"S_f = 1.4, k = 1", "top opening 3.1 diameters wide (< 5)"},
+                                                {"S_f = 1.4, k = 1", "runs not at rest"},
+                                                {"S_f = 1.4, k = 3", "top opening 3.1 diameters wide (< 5)"},
+                                                {"S_f = 1.4, k = 3", "runs not at rest"}});
+    REQUIRE(lines.size() == 2);
+    CHECK(lines[0] == "top opening N diameters wide (< 5): N = 4.3 (fine), 3.1 (S_f = 1.4, k = 1), 3.1 (S_f = 1.4, k = 3)");
+    CHECK(lines[1] == "runs not at rest: S_f = 1.4, k = 1; S_f = 1.4, k = 3");
 }
