@@ -114,6 +114,21 @@ std::string join_tables(const std::vector<io::Table>& tables, io::Format format)
     return s;
 }
 
+ProgressOutput progress_output(const std::string& prefix) {
+    ProgressOutput out;
+    const bool tty = ::isatty(STDERR_FILENO);
+    out.log = [prefix, tty](const std::string& line) {
+        std::fprintf(stderr, "%s%s: %s\n", tty ? "\r\033[K" : "", prefix.c_str(), line.c_str());
+    };
+    if (tty)
+        out.live = [](const std::string& line) {
+            constexpr std::size_t width = 150;  // one terminal line; longer lines would scroll instead of redrawing
+            std::fprintf(stderr, "\r\033[K%s", line.size() > width ? (line.substr(0, width - 3) + "...").c_str() : line.c_str());
+            std::fflush(stderr);
+        };
+    return out;
+}
+
 std::function<void(int, int)> progress_printer(const std::string& what) {
     const bool tty = ::isatty(STDERR_FILENO);
     return [what, tty](int done, int total) {

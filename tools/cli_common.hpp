@@ -90,6 +90,13 @@ BatchSettings batch_settings(const StudyRunOptions& o);
 // Several tables in one output (a JSON array, or blocks separated by a blank line).
 std::string join_tables(const std::vector<io::Table>& tables, io::Format format);
 
+// Long jobs on stderr: `log` prints "<prefix>: line"; `live` redraws one line in place (the runs in
+// progress) on a terminal and is empty otherwise, so that logs and pipes stay quiet.
+struct ProgressOutput {
+    std::function<void(const std::string&)> log, live;
+};
+ProgressOutput progress_output(const std::string& prefix);
+
 // A progress line on stderr, redrawn in place on a terminal and printed once at the end otherwise.
 std::function<void(int, int)> progress_printer(const std::string& what);
 

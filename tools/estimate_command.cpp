@@ -53,8 +53,10 @@ std::string summary(const stats::ExponentEstimate& e) {
 }
 
 int run_estimate(const Options& o) {
-    const auto plan = plan_from(o);
-    const auto study = slump::run_response_study(plan, [](const std::string& line) { std::cerr << "estimate: " << line << "\n"; });
+    auto plan = plan_from(o);
+    const auto out = progress_output("estimate");
+    plan.batch.live = out.live;
+    const auto study = slump::run_response_study(plan, out.log);
     const auto format = io::parse_format(o.run.format, "--format");
     const std::string label = display_path(o.scene);
     std::vector<io::Table> tables = {report::response_table(study, label)};

@@ -61,7 +61,9 @@ int run_report(const Options& o) {
         e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : r.seeds;
         r.estimate = e;
     }
-    const auto out = report::write_similarity_report(r, [](const std::string& s) { std::cerr << "report: " << s << "\n"; });
+    const auto progress = progress_output("report");
+    r.live = progress.live;
+    const auto out = report::write_similarity_report(r, progress.log);
     std::cout << "wrote " << out.html.string() << "\nwrote " << out.markdown.string() << " (figures in "
               << (std::filesystem::path(o.out_dir) / "figures").string() << ")\n"
               << out.caveats.size() << " caveat(s); " << format_short(out.wall_s, 3) << " s\n";

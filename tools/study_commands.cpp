@@ -50,8 +50,10 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     return plan;
 }
 
-slump::Study run(const slump::StudyPlan& plan) {
-    return slump::run_study(plan, [](const std::string& line) { std::cerr << "study: " << line << "\n"; });
+slump::Study run(slump::StudyPlan plan) {
+    const auto out = progress_output("study");
+    plan.live = out.live;
+    return slump::run_study(plan, out.log);
 }
 
 // Prints the tables (text, markdown, csv or json) and the files written; returns the exit code:

@@ -177,12 +177,14 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
     plan.cache_dir = o.cache_dir;
     plan.seeds = o.seeds;
+    plan.live = o.live;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
     std::optional<slump::ResponsePlan> response;  // the measured exponent's, checked with the rest
     if (o.estimate) {
         response = *o.estimate;
         response->fine = scene;
         response->batch.jobs = o.jobs, response->batch.threads_per_job = o.threads_per_job, response->batch.cache_dir = o.cache_dir;
+        response->batch.live = o.live;
         slump::validate_response_plan(*response);
     }
 

@@ -30,6 +30,7 @@ struct ReportOptions {
     int jobs = 1, threads_per_job = 1;
     int seeds = 8;                          // runs per ensemble, fine and coarse
     std::string git_revision;               // shown in the inputs
+    std::function<void(const std::string&)> live;  // slump runs in progress (slump::BatchOptions::live)
     // The measured exponent (its fine scene and runner filled in by the report): none, no section.
     std::optional<slump::ResponsePlan> estimate;
 };

@@ -80,8 +80,30 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
     std::mutex log_mutex;
     std::atomic<std::size_t> next{0}, finished{0}, interrupted{0};
     std::exception_ptr failure;
+    // The live line: each job's current run and phase, redrawn at most twice a second.
+    const int job_count = std::max(1, std::min<int>(o.jobs, static_cast<int>(pending.size())));
+    std::vector<std::string> running(static_cast<std::size_t>(job_count));
+    auto last_live = std::chrono::steady_clock::now();
+    auto live_progress = [&](std::size_t job, const std::string& who) -> std::function<void(const SlumpProgress&)> {
+        if (!o.live) return {};
+        return [&, job, who](const SlumpProgress& p) {
+            char b[200];
+            std::snprintf(b, sizeof b, "%s: %s t = %.2f/%.2f s", who.c_str(), p.phase.c_str(), p.time, p.phase_end);
+            const std::lock_guard lock(log_mutex);
+            running[job] = b;
+            const auto now = std::chrono::steady_clock::now();
+            if (now - last_live < std::chrono::milliseconds(500)) return;
+            last_live = now;
+            std::string line;
+            for (const auto& r : running)
+                if (!r.empty()) line += (line.empty() ? "" : " | ") + r;
+            o.live(line);
+        };
+    };
+    std::atomic<std::size_t> next_job{0};
     auto worker = [&] {
         omp_set_num_threads(o.threads_per_job);  // this thread's own OpenMP setting
+        const std::size_t job = next_job++;
         for (std::size_t i; (i = next++) < pending.size();) {
             StudyRun& r = *pending[i];
             try {
@@ -91,9 +113,10 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
                 if (cache) phases.checkpoint = cache->dir() / (r.key + ".ckpt");
                 const bool resumed = cache && std::filesystem::exists(phases.checkpoint);
                 if (resumed) phases.resume = phases.checkpoint;
-                r.result = run_slump(r.scene, {}, o.force_dt, phases);
+                r.result = run_slump(r.scene, live_progress(job, describe(r)), o.force_dt, phases);
                 if (cache) cache->store(r.key, r.result, o.threads_per_job), std::filesystem::remove(phases.checkpoint);
                 const std::lock_guard lock(log_mutex);
+                running[job].clear();
                 done_cost += expected_cost(r, radius), done_wall += r.result.wall_s;
                 auto& e = ensemble_wall[ensemble[i]];
                 e.first += r.result.wall_s, ++e.second;
@@ -118,6 +141,7 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
     std::vector<std::thread> threads;
     for (int j = 0; j < std::min<int>(o.jobs, static_cast<int>(pending.size())); ++j) threads.emplace_back(worker);
     for (auto& t : threads) t.join();
+    if (o.live) o.live("");
     if (interrupted > 0 && cache)
         throw Interrupted(std::to_string(finished) + " of " + std::to_string(pending.size()) + " runs finished and cached, " +
                               std::to_string(interrupted) + " checkpointed; run the same command again to continue",

@@ -31,6 +31,9 @@ struct BatchOptions {
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
     double reference_radius_m = 1e-3;  // to rank runs by cost (particles ∝ (R/R̄)³, steps ∝ 1/dt)
+    // The runs in progress, one line (who, phase, simulated time of the phase's latest end), about
+    // twice a second while any run is going and "" when the batch ends; none: not reported.
+    std::function<void(const std::string&)> live;
 };
 
 // Fills every run's key, result, from_cache and warnings. Throws std::runtime_error when a run

@@ -70,7 +70,7 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
     for (auto& r : study.replicas) all.push_back(&r);
     for (auto& r : study.runs) all.push_back(&r);
     for (auto& r : study.coarse_seeds) all.push_back(&r);
-    run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m}, log);
+    run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m, plan.live}, log);
 
     double reach = 0;  // the reference's radial grid covers every pile of the study
     for (const auto* r : all) reach = std::max(reach, r->result.final.spread_max);

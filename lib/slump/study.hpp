@@ -28,6 +28,7 @@ struct StudyPlan {
     int jobs = 1, threads_per_job = 1;
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
+    std::function<void(const std::string&)> live;  // the runs in progress (BatchOptions::live)
 };
 
 struct Study {
