@@ -77,7 +77,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     auto* c = app.add_subcommand("report", "the similarity report: inputs, Table 1, Figs. 3-4, bridge accuracy, slump study, caveats");
     c->add_option("--scene", o->scene, "slump scene (default: data/scenes/kantro_wet.toml; --quick: small_wet.toml)");
     c->add_option("--config", o->config, "Table 1 style inputs for the similarity table (default: the --scene's own; without --scene data/table1.toml)");
-    c->add_option("--exponents", o->exponents, "candidate exponents k (default: the configuration's, 1,3)");
+    c->add_option("--exponent,--exponents", o->exponents, "candidate exponents k, comma-separated (default: the scene's or config's, 1,3)");
     c->add_option("--sf", o->sfs, "scale factors of the coarse runs (default 1.4,1.96,2.74,3.84; --quick: 1.4)");
     c->add_option("--out", o->out_dir, "folder for report.html, report.md and figures/ (default: report/)");
     c->add_flag("--quick", o->quick, "small scene, coarse grids: the whole report in under a minute");

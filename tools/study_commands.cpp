@@ -114,7 +114,7 @@ std::vector<Command> study_commands(CLI::App& app) {
     auto sweep = std::make_shared<Options>();
     sweep->exponents = "1,1.5,2,2.5,3";
     auto* s = app.add_subcommand("sweep", "check-exponent for several k: errors against k and against speed-up, best k per S_f");
-    s->add_option("--exponents", sweep->exponents, "candidate exponents k")->capture_default_str();
+    s->add_option("--exponent,--exponents", sweep->exponents, "candidate exponents k, comma-separated")->capture_default_str();
     add_common(s, *sweep);
 
     return {{c,
