@@ -8,11 +8,12 @@
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
+#include "git_revision.hpp"
 
 int main(int argc, char** argv) {
     using namespace demscale;
     CLI::App app{"demscale: similarity (scaling) laws for DEM of wet granular material (Yun & Park 2017)"};
-    app.set_version_flag("--version", std::string(version));
+    app.set_version_flag("--version", "demscale " + std::string(version) + " (git " + git_revision + ")");
     app.require_subcommand(1);
     auto commands = cli::similarity_commands(app);
     for (auto& c : cli::bridge_commands(app)) commands.push_back(std::move(c));

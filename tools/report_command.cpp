@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "git_revision.hpp"
 #include "core/input_error.hpp"
 #include "report/similarity_report.hpp"
 
@@ -22,19 +23,6 @@ struct Options {
     int estimate_seeds = 0;                // 0: the report's --seeds
 };
 
-// The source tree's revision, with "+changes" when the working tree differs from it.
-std::string git_revision() {
-    const std::string cmd = "git -C '" + source_dir + "' describe --always --dirty=+changes 2>/dev/null";
-    std::string out;
-    if (FILE* p = ::popen(cmd.c_str(), "r")) {
-        char b[128];
-        while (std::fgets(b, sizeof b, p)) out += b;
-        ::pclose(p);
-    }
-    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-    return out;
-}
-
 int run_report(const Options& o) {
     report::ReportOptions r;
     r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
@@ -51,7 +39,7 @@ int run_report(const Options& o) {
     r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
     r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
-    r.git_revision = git_revision();
+    r.git_revision = demscale::git_revision;  // the build's, refreshed at every build
     if (o.estimate) {
         slump::ResponsePlan e;
         e.scale_factors = parse_number_list(!o.estimate_sf.empty() ? o.estimate_sf : o.quick ? "1.4" : "1.4,1.96", "--estimate-sf", 0, 100);

@@ -33,13 +33,35 @@ io::Table transposed(const io::Table& t) {
     return out;
 }
 
+// How many leading columns identify a row (their cells distinct across rows), at most three:
+// each part of a split table repeats them.
+std::size_t key_columns(const io::Table& t) {
+    for (std::size_t k = 1; k <= std::min<std::size_t>(3, t.columns.size() - 1); ++k) {
+        std::vector<std::string> keys;
+        for (const auto& row : t.rows) {
+            std::string key;
+            for (std::size_t j = 0; j < k; ++j) key += document_cell(row[j]) + "\x1f";
+            keys.push_back(key);
+        }
+        std::sort(keys.begin(), keys.end());
+        if (std::adjacent_find(keys.begin(), keys.end()) == keys.end()) return k;
+    }
+    return 1;
+}
+
 std::vector<io::Table> split_columns(const io::Table& t, std::size_t max_chars) {
+    const std::size_t keys = key_columns(t);
+    std::size_t key_width = 0;
+    for (std::size_t j = 0; j < keys; ++j) key_width += column_width(t, j);
     std::vector<std::vector<std::size_t>> groups;
-    const std::size_t key = column_width(t, 0);
     std::size_t used = max_chars;  // forces a first group
-    for (std::size_t j = 1; j < t.columns.size(); ++j) {
+    for (std::size_t j = keys; j < t.columns.size(); ++j) {
         const std::size_t w = column_width(t, j);
-        if (used + w > max_chars) groups.push_back({0}), used = key;
+        if (used + w > max_chars) {
+            groups.emplace_back();
+            for (std::size_t k = 0; k < keys; ++k) groups.back().push_back(k);
+            used = key_width;
+        }
         groups.back().push_back(j);
         used += w;
     }

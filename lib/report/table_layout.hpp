@@ -19,7 +19,8 @@ std::size_t estimated_width(const io::Table& t);
 
 // The table itself when it fits max_chars; else its transpose (rows become columns, headed by
 // each row's first cell) when that fits; else parts of consecutive columns, each starting with the
-// first column. Metadata stays with the first part, notes with the last.
+// key columns (the fewest leading columns, at most three, that tell the rows apart). Metadata
+// stays with the first part, notes with the last.
 std::vector<io::Table> fit_to_width(const io::Table& t, std::size_t max_chars = 140);
 
 }  // namespace demscale::report
