@@ -34,6 +34,12 @@ struct Options {
     std::string dump;   // LIGGGHTS dump to measure
 };
 
+// --threads: N OpenMP threads; 0 leaves OpenMP's default (all cores).
+void use_threads(int threads) {
+    if (threads < 0) throw InputError("--threads", std::to_string(threads), ">= 1 (0: all cores)");
+    if (threads > 0) omp_set_num_threads(threads);
+}
+
 // Progress on stderr: redrawn in place on a terminal, one line per phase otherwise.
 std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* series, double vtk_every) {
     const bool tty = ::isatty(STDERR_FILENO);
@@ -55,8 +61,7 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
-    if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), ">= 1 (0: all cores)");
-    if (o.threads > 0) omp_set_num_threads(o.threads);
+    use_threads(o.threads);
     const auto fine = slump::load_slump_scene(o.scene);
     auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
@@ -146,6 +151,7 @@ int run_slump_command(const Options& o) {
 // Settles the scene's fill in demscale and writes it for LIGGGHTS (and as settled.csv for
 // `demscale slump --start`), so both engines lift and spread the very same particles.
 int run_export_liggghts(const Options& o) {
+    use_threads(o.threads);
     const auto scene = slump::load_slump_scene(o.scene);
     slump::SlumpPhases phases;
     phases.settle_only = true;
@@ -200,6 +206,7 @@ std::vector<Command> slump_commands(CLI::App& app) {
     auto* lig = exp->add_subcommand("liggghts", "settle the fill, then write a LIGGGHTS deck, data file and cone STL");
     lig->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     lig->add_option("--out", o->out_dir, "output folder")->required();
+    lig->add_option("--threads", o->threads, "OpenMP threads for the settling run (default: all cores)");
     exp->require_subcommand(1);
 
     auto* pile = app.add_subcommand("pile", "measure a pile written by LIGGGHTS (text dump with x y z radius)");
