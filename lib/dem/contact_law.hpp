@@ -62,9 +62,9 @@ struct ContactLaw {
     DEMSCALE_HOT ContactForce force(const ContactPair& c, StateFor<Lost>& s, Lost& lost) const {
         ContactForce out;
         if (c.overlap <= 0) {  // surfaces apart: a bridge's pull (and drag) at most, the springs released
-            out.on_i = (0.0 - pull_apart(c.overlap, c.v_normal, c.dt, c.wall, s, lost)) * c.normal;
+            out.on_i = (0.0 - pull_apart(c.overlap, c.r_harmonic, c.v_normal, c.dt, c.wall, s, lost)) * c.normal;
             if (needs_gap_velocity()) {
-                out.tangential = cohesion.drag(c.overlap, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
+                out.tangential = cohesion.drag(c.overlap, c.r_harmonic, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
                 out.on_i += out.tangential;
             }
             return out;
@@ -72,10 +72,10 @@ struct ContactLaw {
         const double damping = normal.damping_force(c);
         const double elastic = normal.elastic_force(c), fn = elastic + damping;
         lost.normal_damping += -damping * c.v_normal * c.dt;
-        const double attraction = cohesion.pull(c.overlap, c.v_normal, c.dt, c.wall, s.cohesion, lost);
+        const double attraction = cohesion.pull(c.overlap, c.r_harmonic, c.v_normal, c.dt, c.wall, s.cohesion, lost);
         out.on_i = (fn - attraction) * c.normal;
         out.tangential = tangential.force(c, fn, s.tangential, lost);
-        if (needs_gap_velocity()) out.tangential += cohesion.drag(c.overlap, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
+        if (needs_gap_velocity()) out.tangential += cohesion.drag(c.overlap, c.r_harmonic, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
         out.on_i += out.tangential;
         // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
         out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
@@ -90,10 +90,11 @@ struct ContactLaw {
     // force() for surfaces apart (overlap δ ≤ 0, m), where only a bridge can act: its attraction
     // (N, along −n on i), the springs released. It needs no masses and, unless needs_gap_velocity(),
     // no velocity (v_normal, m/s, > 0 separating), so the engine calls it directly for a bridged
-    // pair across a gap. dt: s, for the ledger.
+    // pair across a gap. r_harmonic: the pair's ContactPair::r_harmonic, m; dt: s, for the ledger.
     template <class Lost>
-    DEMSCALE_HOT double pull_apart(double overlap, double v_normal, double dt, bool with_wall, StateFor<Lost>& s, Lost& lost) const {
-        const double attraction = cohesion.pull(overlap, v_normal, dt, with_wall, s.cohesion, lost);
+    DEMSCALE_HOT double pull_apart(double overlap, double r_harmonic, double v_normal, double dt, bool with_wall, StateFor<Lost>& s,
+                                   Lost& lost) const {
+        const double attraction = cohesion.pull(overlap, r_harmonic, v_normal, dt, with_wall, s.cohesion, lost);
         tangential.release(s.tangential, lost);
         rolling.release(s.rolling, lost);
         return attraction;

@@ -22,12 +22,12 @@ double linear_contact_time(double k, double m_eff, double e) {
     return std::numbers::pi / (w0 * std::sqrt(1.0 - beta * beta));
 }
 
-void check_time_step(double dt, double critical, double safety, bool force, const std::string& field) {
+void check_time_step(double dt, double critical, double safety, bool force, const std::string& field, const std::string& what) {
     require_positive(dt, field);
     if (dt > safety * critical && !force)
         throw InputError(field, format_number(dt) + " s",
                          "<= " + format_short(safety * critical, 3) + " s (" + format_number(safety) +
-                             " x the Rayleigh time " + format_short(critical, 3) + " s); pass --force-dt to override");
+                             " x " + what + " " + format_short(critical, 3) + " s); pass --force-dt to override");
 }
 
 }  // namespace demscale::dem

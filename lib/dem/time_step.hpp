@@ -16,6 +16,8 @@ double linear_contact_time(double k, double m_eff, double restitution);
 
 // Throws InputError naming the step and the limit when dt > safety·critical, unless forced.
 // field: where dt came from, for the message (e.g. "scene.toml:40: run.dt_s").
-void check_time_step(double dt, double critical, double safety, bool force, const std::string& field = "dt");
+// what: the time scale's name ("the Rayleigh time").
+void check_time_step(double dt, double critical, double safety, bool force, const std::string& field = "dt",
+                     const std::string& what = "the Rayleigh time");
 
 }  // namespace demscale::dem

@@ -21,6 +21,7 @@
 #include "report/caveats.hpp"
 #include "report/document.hpp"
 #include "report/exponent_estimate_files.hpp"
+#include "report/scene_table.hpp"
 #include "report/similarity_table.hpp"
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
@@ -38,43 +39,6 @@ using Clock = std::chrono::steady_clock;
 
 std::string pct(double x) { return format_short(100 * x, 3) + " %"; }
 
-io::Table scene_parameters(const slump::SlumpScene& s, const std::string& label) {
-    io::Table t;
-    t.title = "Slump scene (" + label + ")";
-    t.columns = {"parameter", "value", "unit"};
-    auto add = [&](const std::string& name, double value, const std::string& unit) { t.rows.push_back({name, value, unit}); };
-    add("cone bottom / top inner diameter", s.bottom_diameter_m * 1e3, "mm"), t.rows.back()[1] =
-        format_short(s.bottom_diameter_m * 1e3) + " / " + format_short(s.top_diameter_m * 1e3);
-    add("cone height", s.height_m * 1e3, "mm");
-    add("cone lift speed", s.lift_speed_m_per_s, "m/s");
-    add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
-    add("particle density", s.material.density, "kg/m^3");
-    add("fill height", s.fill_height_m * 1e3, "mm");
-    t.rows.push_back({"fill", std::string(s.fill == slump::FillKind::poured ? "poured in batches, struck off level" : "hcp lattice"),
-                      std::string("-")});
-    add("Young's modulus E", s.material.youngs_modulus, "Pa");
-    add("Poisson's ratio", s.material.poisson_ratio, "1");
-    add("restitution", s.material.restitution, "1");
-    add("sliding friction", s.material.friction, "1");
-    add("rolling friction (EPSD)", s.rolling_resistance ? s.material.rolling_friction : 0.0, "1");
-    add("rolling damping eta_r (EPSD dashpot)", s.rolling_resistance ? s.material.rolling_damping : 0.0, "1");
-    add("surface tension gamma", s.wet ? s.liquid.surface_tension_n_per_m : 0.0, "N/m");
-    add("contact angle theta", s.liquid.contact_angle.degrees(), "deg");
-    add("moisture content (Eq. 5)", s.liquid.moisture_content, "kg/kg");
-    t.rows.push_back({"bridge model", std::string(s.wet ? bridge::to_string(s.bridge.variant) : "none (dry)"), std::string("-")});
-    t.rows.push_back({"bridges to the floor and cone", std::string(s.wet_walls ? "yes" : "no"), std::string("-")});
-    add("liquid viscosity (bridge's viscous part; 0: none)", s.wet ? s.viscosity_pa_s : 0.0, "Pa s");
-    add("time step (fine run)", s.dt_s * 1e6, "us");
-    add("gravity", s.gravity, "m/s^2");
-    add("settle / spread time limits", s.settle_time_s, "s"), t.rows.back()[1] =
-        format_short(s.settle_time_s) + " / " + format_short(s.spread_time_s);
-    add("at rest: this share of the particles", s.rest_quantile, "1");
-    add("... slower than", s.rest_speed_m_per_s, "m/s");
-    add("... for", s.rest_duration_s, "s");
-    return t;
-}
-
-// F̂ = F/(2πRγ) of the exact bridge and the regressions at the scene's V̂ along the gap.
 io::Table bridge_at_scene(double vhat, ContactAngle theta) {
     const auto exact = bridge::make_bridge_model("exact");
     const std::vector<std::string> names = {"mikami1998", "yun-park-2017"};
@@ -374,7 +338,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
                                         "seeds per ensemble: " + std::to_string(plan.seeds),
                                         "tolerances: slump " + pct(plan.tolerances.slump) + " of the fill height, spread " + pct(plan.tolerances.spread) +
                                             ", profile " + pct(plan.tolerances.profile)}});
-    inputs.blocks.push_back(TableBlock{scene_parameters(scene, o.scene_label)});
+    inputs.blocks.push_back(TableBlock{scene_table(scene, o.scene_label)});
     io::Table time_table;
     time_table.title = "Wall time of each section";
     time_table.columns = {"section", "wall_s"};

@@ -39,8 +39,10 @@ const std::vector<std::string>& scalable_parameters() {
 }
 
 double demanded_exponent(const std::string& key, double k, const std::string& field) {
-    return replacement_exponent(dim(key, field), implied_time_exponent(k));
+    return demanded_exponent(dim(key, field), k);
 }
+
+double demanded_exponent(Dimension d, double k) { return replacement_exponent(d, implied_time_exponent(k)); }
 
 ExponentSimilarity exponent_similarity(double k) {
     ExponentSimilarity s;

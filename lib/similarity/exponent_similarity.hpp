@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "similarity/dimension.hpp"
+
 namespace demscale::similarity {
 
 struct ExponentGroup {
@@ -36,5 +38,7 @@ const std::vector<std::string>& scalable_parameters();
 // S_f exponent the basis implied by k demands of a catalogue quantity (throws InputError naming
 // `field` for an unknown key).
 double demanded_exponent(const std::string& key, double k, const std::string& field);
+// The same for a quantity of dimension d: S_f^e keeps it similar under the basis k implies.
+double demanded_exponent(Dimension d, double k);
 
 }  // namespace demscale::similarity

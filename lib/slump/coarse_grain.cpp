@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/input_error.hpp"
-#include "dem/time_step.hpp"
+#include "dem/law_parts.hpp"
 #include "similarity/exponent_similarity.hpp"
 
 namespace demscale::slump {
@@ -14,19 +14,34 @@ SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c) {
     require_in_open_interval(c.exponent, -20, 20, "--exponent");
     SlumpScene s = fine;
     s.radius_m = fine.radius_m * c.sf;                                                          // Eq. 9: R̄ = S_f R
-    s.liquid.surface_tension_n_per_m = fine.liquid.surface_tension_n_per_m * std::pow(c.sf, c.exponent);  // Eq. 12, any k
     s.skin_m = fine.skin_m * c.sf;
+    // The law parts' parameters by the rule their tables declare: γ̄ = γ·S_f^k (Eq. 12, any k);
+    // a scalable one named in --scale by what its dimension demands under the basis k implies.
+    // gravity and the lift speed are the scene's own, scaled the same way when named.
+    std::vector<std::string_view> known = {"gravity", "velocity"};
+    for (const auto& part : dem::law_parts())
+        for (const auto& p : part.parameters) {
+            if (p.replacement == dem::Replacement::surface_tension) p.set(s, p.get(fine) * std::pow(c.sf, c.exponent));
+            if (p.replacement != dem::Replacement::scalable) continue;
+            known.push_back(p.scale_name);
+            if (std::find(c.scaled.begin(), c.scaled.end(), p.scale_name) != c.scaled.end())
+                p.set(s, p.get(fine) * std::pow(c.sf, similarity::demanded_exponent(p.dimension, c.exponent)));
+        }
     for (const auto& key : c.scaled) {
-        const auto& known = similarity::scalable_parameters();
-        if (std::find(known.begin(), known.end(), key) == known.end())
-            throw InputError("--scale", key, "gravity, youngs_modulus, velocity (the lift speed) or viscosity");
-        const double factor = std::pow(c.sf, similarity::demanded_exponent(key, c.exponent, "--scale"));
-        if (key == "gravity") s.gravity *= factor;
-        if (key == "youngs_modulus") s.material.youngs_modulus *= factor;
-        if (key == "velocity") s.lift_speed_m_per_s *= factor;
-        if (key == "viscosity") s.viscosity_pa_s *= factor;
+        if (std::find(known.begin(), known.end(), key) == known.end()) {
+            std::string names;
+            for (const auto& k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+            throw InputError("--scale", key, names + " (velocity: the lift speed)");
+        }
+        if (key == "gravity") s.gravity *= std::pow(c.sf, similarity::demanded_exponent(key, c.exponent, "--scale"));
+        if (key == "velocity") s.lift_speed_m_per_s *= std::pow(c.sf, similarity::demanded_exponent(key, c.exponent, "--scale"));
     }
-    s.dt_s = fine.dt_s * dem::rayleigh_time(s.material, s.radius_m) / dem::rayleigh_time(fine.material, fine.radius_m);
+    // The time step keeps its margin to every limit the laws impose (the Rayleigh time grows with R̄).
+    const auto fine_limits = dem::time_step_limits(fine, fine.radius_m), coarse_limits = dem::time_step_limits(s, s.radius_m);
+    for (std::size_t i = 0; i < fine_limits.size(); ++i) {
+        const double dt = fine.dt_s * coarse_limits[i].seconds / fine_limits[i].seconds;
+        s.dt_s = i == 0 ? dt : std::min(s.dt_s, dt);
+    }
     if (!(2 * s.radius_m < s.top_diameter_m))
         throw InputError("--sf", format_number(c.sf),
                          "< " + format_number(0.5 * s.top_diameter_m / fine.radius_m) +

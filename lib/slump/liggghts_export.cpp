@@ -1,5 +1,7 @@
 #include "slump/liggghts_export.hpp"
 
+#include "dem/law_parts.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -58,7 +60,6 @@ std::string cone_stl(const slump::SlumpScene& sc) {
 
 // particles: the pile's count; atoms after it are the rough floor's grains, which only the pile touches.
 std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains) {
-    const auto& m = sc.material;
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
     const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
     // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and the scene's rolling damping η_r.
@@ -78,15 +79,21 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     if (grains > 0) s << "group pile id <> 1 " << particles << "\n# atoms " << particles + 1 << " to " << particles + grains
                       << ": the rough floor's grains, held in place (no integration)\n";
     s
-      << "neighbor " << sc.skin_m << " bin\nneigh_modify delay 0\n"
-      << "fix m1 all property/global youngsModulus peratomtype " << m.youngs_modulus << "\n"
-      << "fix m2 all property/global poissonsRatio peratomtype " << m.poisson_ratio << "\n"
-      << "fix m3 all property/global coefficientRestitution peratomtypepair 1 " << m.restitution << "\n"
-      << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << m.friction << "\n";
-    if (sc.rolling_resistance) s << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << m.rolling_friction << "\n";
-    if (sc.rolling_resistance && model == slump::RollingModel::epsd)
-        s << "fix m6 all property/global rollingStiffness scalar 2.25\n"
-          << "fix m7 all property/global coefficientRollingViscousDamping peratomtypepair 1 " << m.rolling_damping << "\n";
+      << "neighbor " << sc.skin_m << " bin\nneigh_modify delay 0\n";
+    // The material: every parameter with a LIGGGHTS name of each law part that acts, from its table.
+    int property = 0;
+    for (const auto& part : dem::law_parts()) {
+        if (!part.active(sc)) continue;
+        if (!part.liggghts_extra.empty()) s << "fix m" << ++property << " all " << part.liggghts_extra << "\n";
+        for (const auto& p : part.parameters) {
+            if (p.liggghts.empty()) continue;
+            s << "fix m" << ++property << " all property/global " << p.liggghts
+              << (p.liggghts_kind == dem::LiggghtsKind::per_type        ? " peratomtype "
+                  : p.liggghts_kind == dem::LiggghtsKind::per_type_pair ? " peratomtypepair 1 "
+                                                                        : " scalar ")
+              << p.get(sc) << "\n";
+        }
+    }
     s << "pair_style gran " << laws << "\npair_coeff * *\n"
       << "timestep " << sc.dt_s << "\n"
       << "fix gravi " << pile << " gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/version.hpp"
+#include "dem/law_parts.hpp"
 #include "io/atomic_file.hpp"
 #include "io/particle_state.hpp"
 
@@ -16,35 +17,29 @@ namespace {
 // Part of every key: bump it whenever a change to the engine or the protocol changes results, so
 // runs cached by older code are not reused.
 // 2: history carries the energy ledger; 3: repose flank above the foot; 4: poured fills, quantile
-// rest criterion, fill measures and motion at the end.
-constexpr int cache_format = 4;
+// rest criterion, fill measures and motion at the end; 5: law parameters keyed from their tables.
+constexpr int cache_format = 5;
 
-std::string canonical(const SlumpScene& s) {
+std::string canonical(const SlumpScene& s, std::span<const dem::LawPart> parts) {
     std::string t;
-    auto add = [&t](const char* name, double v) {
-        char b[64];
-        std::snprintf(b, sizeof b, "%s=%.17g\n", name, v);
+    auto add = [&t](std::string_view name, double v) {
+        char b[160];
+        std::snprintf(b, sizeof b, "%.*s=%.17g\n", static_cast<int>(name.size()), name.data(), v);
         t += b;
     };
     t += std::string("demscale=") + version + "\ncache=" + std::to_string(cache_format) + "\n";
     add("bottom", s.bottom_diameter_m), add("top", s.top_diameter_m), add("height", s.height_m);
     add("lift_speed", s.lift_speed_m_per_s), add("lift_height", s.lift_height_m);
-    add("radius", s.radius_m), add("fill", s.fill_height_m), add("seed", s.seed);
-    const auto& m = s.material;
-    add("density", m.density), add("E", m.youngs_modulus), add("nu", m.poisson_ratio), add("e", m.restitution);
-    add("mu", m.friction), add("mu_r", m.rolling_friction), add("k_lin", m.linear_stiffness);
-    add("rolling", s.rolling_resistance), add("wet", s.wet), add("wet_walls", s.wet_walls);
-    // Absent at their defaults, so that keys of scenes from before they existed stay valid.
+    add("radius", s.radius_m), add("fill", s.fill_height_m), add("seed", s.seed), add("density", s.material.density);
     if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);
-    if (s.rolling_model != RollingModel::epsd) add("rolling_model", static_cast<double>(s.rolling_model));
-    if (m.rolling_damping > 0) add("eta_r", m.rolling_damping);
-    if (s.wet) {  // a dry run uses no liquid parameter: coarse runs of every k share one key
-        add("gamma", s.liquid.surface_tension_n_per_m), add("theta", s.liquid.contact_angle.radians());
-        add("rho_l", s.liquid.density_kg_per_m3), add("moisture", s.liquid.moisture_content);
-        add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
-        // lubrication 2: normal and tangential parts (runs with the normal part alone are not reused).
-        if (s.viscosity_pa_s > 0) add("mu_l", s.viscosity_pa_s), add("min_gap", s.min_gap_ratio), add("lubrication", 2);
-    }
+    // Which laws act, then the parameters of each part that acts, from its table: a part that does
+    // not act leaves no trace (a dry run has no liquid: the coarse runs of every k share one key).
+    add("rolling", s.rolling_resistance), add("rolling_model", static_cast<double>(s.rolling_model));
+    add("wet", s.wet), add("wet_walls", s.wet_walls);
+    if (s.wet) add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
+    for (const auto& part : parts)
+        if (part.active(s))
+            for (const auto& p : part.parameters) add(p.key, p.get(s));
     add("dt", s.dt_s), add("g", s.gravity), add("settle", s.settle_time_s), add("spread", s.spread_time_s);
     add("rest_speed", s.rest_speed_m_per_s), add("rest_duration", s.rest_duration_s), add("skin", s.skin_m);
     add("fill_kind", static_cast<double>(s.fill)), add("pour_time", s.pour_time_s), add("rest_quantile", s.rest_quantile);
@@ -71,9 +66,9 @@ TimePoint history_point(const nlohmann::json& a) {
 
 }  // namespace
 
-std::string scene_key(const SlumpScene& s) {
+std::string scene_key(const SlumpScene& s, std::span<const dem::LawPart> parts) {
     std::uint64_t h = 14695981039346656037ull;
-    for (unsigned char c : canonical(s)) h = (h ^ c) * 1099511628211ull;
+    for (unsigned char c : canonical(s, parts)) h = (h ^ c) * 1099511628211ull;
     char b[17];
     std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
     return b;

@@ -1,5 +1,10 @@
 #include "slump/slump_run.hpp"
 
+#include "dem/checkpoint.hpp"
+#include "dem/law_parts.hpp"
+
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -37,7 +42,7 @@ struct ProtocolState {
     std::uint64_t pour_steps = 0;
     std::uint64_t pile = 0;  // spheres in the pile (a resumed engine is sized by the checkpoint)
 };
-constexpr char slump_checkpoint_magic[16] = "demscale-slump3";
+constexpr CheckpointTag slump_checkpoint_tag = "demscale-slump3";  // then the engine's own
 
 // The walls: the floor and the cone, standing (its lift is scheduled later).
 std::vector<Wall> slump_walls(const SlumpScene& s) {
@@ -105,15 +110,18 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     if (!phases.resume.empty()) {
         const std::string accepted = "a checkpoint an interrupted run of this scene wrote (scene key " + key + ")";
         std::istringstream in(io::read_input_file("--resume", phases.resume.string(), accepted), std::ios::binary);
-        char magic[sizeof slump_checkpoint_magic] = {}, stored_key[16] = {};
-        in.read(magic, sizeof magic), in.read(stored_key, sizeof stored_key);
-        if (!in || std::memcmp(magic, slump_checkpoint_magic, sizeof magic) != 0 || std::string(stored_key, 16) != key)
+        try {
+            CheckpointReader r(in, slump_checkpoint_tag, "another format");
+            std::array<char, 16> stored_key{};
+            r.value(stored_key);
+            if (std::string(stored_key.data(), 16) != key) throw InputError("--resume", phases.resume.string(), accepted);
+            r.value(st);
+            r.array(res.history);
+        } catch (const InputError&) {
+            throw;
+        } catch (const std::runtime_error&) {  // another format, or truncated
             throw InputError("--resume", phases.resume.string(), accepted);
-        std::uint64_t n = 0;
-        in.read(reinterpret_cast<char*>(&st), sizeof st), in.read(reinterpret_cast<char*>(&n), sizeof n);
-        if (!in || n > (1ULL << 32)) throw InputError("--resume", phases.resume.string(), accepted);
-        res.history.resize(n);
-        in.read(reinterpret_cast<char*>(res.history.data()), static_cast<std::streamsize>(n * sizeof(TimePoint)));
+        }
         if (st.phase >= 1) schedule_lift();
         if (st.phase >= 2) sim.remove_wall(1);
         sim.load(in);
@@ -145,12 +153,10 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         if (phases.checkpoint.empty()) throw Interrupted(where, "");
         st.wall_s = wall_time();
         std::ostringstream out(std::ios::binary);
-        const std::uint64_t n = res.history.size();
-        out.write(slump_checkpoint_magic, sizeof slump_checkpoint_magic);
-        out.write(key.data(), 16);
-        out.write(reinterpret_cast<const char*>(&st), sizeof st);
-        out.write(reinterpret_cast<const char*>(&n), sizeof n);
-        out.write(reinterpret_cast<const char*>(res.history.data()), static_cast<std::streamsize>(n * sizeof(TimePoint)));
+        CheckpointWriter w(out, slump_checkpoint_tag);
+        std::array<char, 16> stored_key{};
+        std::copy_n(key.begin(), 16, stored_key.begin());
+        w.value(stored_key), w.value(st), w.array(res.history);
         sim.save(out);
         io::write_file_atomically(phases.checkpoint, out.str());
         throw Interrupted(where, phases.checkpoint.string());
@@ -202,11 +208,13 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     return res;
 }
 
-// The wet law's bridge: liquid per bridge from Eq. 5 with the particle mass.
-CohesionMikamiBridge bridge_for(const SlumpScene& s) {
+// The wet law's bridge: liquid per bridge from Eq. 5 with the particle mass, the same V̂ for every
+// pair; largest_radius sets the range (the scene's R for its own fills).
+template <class Bridge>
+Bridge bridge_for(const SlumpScene& s, double largest_radius) {
     const double vhat = bridge_vhat(s);
-    CohesionMikamiBridge c{bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge), s.radius_m,
-                           s.liquid.surface_tension_n_per_m, std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
+    Bridge c{bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge), largest_radius,
+             s.liquid.surface_tension_n_per_m, std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
     if (s.wet_walls)
         c.wall = bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge, bridge::BridgeGeometry::sphere_wall);
     return c;
@@ -215,7 +223,16 @@ CohesionMikamiBridge bridge_for(const SlumpScene& s) {
 }  // namespace
 
 void check_slump_time_step(const SlumpScene& s, bool force_dt) {
-    check_time_step(s.dt_s, rayleigh_time(s.material, s.radius_m), 0.2, force_dt, s.dt_field);
+    for (const auto& limit : time_step_limits(s, s.radius_m))
+        check_time_step(s.dt_s, limit.seconds, limit.fraction, force_dt, s.dt_field, std::string(limit.name));
+}
+
+double binding_time_scale(const SlumpScene& s) {
+    const auto limits = time_step_limits(s, s.radius_m);
+    const auto binding = std::min_element(limits.begin(), limits.end(), [](const TimeScale& a, const TimeScale& b) {
+        return a.fraction * a.seconds < b.fraction * b.seconds;
+    });
+    return binding->seconds;
 }
 
 double SlumpResult::energy_balance_error() const {
@@ -227,7 +244,7 @@ double SlumpResult::energy_balance_error() const {
 SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                       SlumpPhases phases) {
     check_slump_time_step(s, force_dt);
-    const double critical = rayleigh_time(s.material, s.radius_m);
+    const double critical = binding_time_scale(s);
     // A resumed run takes its particles from the checkpoint; the lattice fill only sizes the engine.
     const bool pour = s.fill == FillKind::poured && !phases.start && phases.resume.empty();
     Particles particles = phases.start ? *phases.start : pour ? Particles{} : fill_cone(s);
@@ -251,7 +268,13 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
             return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd2>(s.material, cohesion));
         return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd>(s.material, cohesion));
     };
-    res = s.wet ? with_rolling(bridge_for(s)) : with_rolling(CohesionNone{});
+    // A start state with unequal radii (another engine's fill) takes each pair's harmonic-mean
+    // radius in its bridges; the protocol's own fills are monodisperse.
+    const auto [smallest, largest] = std::minmax_element(particles.radius.begin(), particles.radius.end());
+    const bool unequal = smallest != particles.radius.end() && *smallest != *largest;
+    if (!s.wet) res = with_rolling(CohesionNone{});
+    else if (unequal) res = with_rolling(bridge_for<CohesionMikamiBridgePerPair>(s, *largest));
+    else res = with_rolling(bridge_for<CohesionMikamiBridge>(s, s.radius_m));
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

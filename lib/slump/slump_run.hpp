@@ -72,8 +72,11 @@ struct SlumpPhases {
     std::filesystem::path checkpoint, resume;
 };
 
-// Throws InputError naming the scene's run.dt_s when dt > 0.2 × the Rayleigh time, unless force_dt.
+// Throws InputError naming the scene's run.dt_s when dt exceeds a limit of the laws that act
+// (0.2 × the Rayleigh time; 0.2 × the lubrication time of a viscous bridge), unless force_dt.
 void check_slump_time_step(const SlumpScene& scene, bool force_dt);
+// The time scale of the limit that binds (for the report: the Rayleigh time in the shipped scenes).
+double binding_time_scale(const SlumpScene& scene);
 
 // progress is called about every 5 ms of simulated time. Throws InputError for a time step above
 // 0.2 × the Rayleigh time (unless force_dt) or a checkpoint of another scene, std::runtime_error if

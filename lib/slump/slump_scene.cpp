@@ -1,33 +1,40 @@
 #include "slump/slump_scene.hpp"
 
 #include <cmath>
+#include <span>
 
 #include "bridge/liquid_volume.hpp"
 #include "bridge/validity.hpp"
 #include "core/input_error.hpp"
 #include "io/toml_reader.hpp"
+#include "dem/law_parts.hpp"
 
 namespace demscale::slump {
 
 namespace {
-const std::map<std::string, std::vector<std::string_view>> schema = {
-    {"scene", {"name"}},
-    {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
-    {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed", "fill"}},
-    {"floor", {"rough", "rough_diameter_mm"}},
-    {"contact", {"youngs_modulus_pa", "poisson_ratio", "restitution", "friction", "rolling_friction", "rolling_resistance",
-                 "rolling_model", "rolling_damping"}},
-    {"liquid", {"wet", "wet_walls", "surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content",
-                "bridge_variant", "rupture", "viscosity_pa_s", "min_gap_ratio"}},
-    {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s", "rest_duration_s",
-             "rest_quantile", "skin_mm"}},
-    {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
-    {"similarity", {"scale_factors", "exponents"}},
-};
-void positive(double x, const std::string& f) { require_positive(x, f); }
-auto open_interval(double lo, double hi) {
-    return [lo, hi](double x, const std::string& f) { require_in_open_interval(x, lo, hi, f); };
+// The keys a scene may hold: the geometry and protocol's, the law selection's, and every
+// registered law part's parameters (their tables, dem/law_parts.hpp).
+std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<const dem::LawPart> parts) {
+    std::map<std::string, std::vector<std::string_view>> schema = {
+        {"scene", {"name"}},
+        {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
+        {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed", "fill"}},
+        {"floor", {"rough", "rough_diameter_mm"}},
+        {"contact", {"rolling_resistance", "rolling_model"}},
+        {"liquid", {"wet", "wet_walls", "bridge_variant", "rupture"}},
+        {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s",
+                 "rest_duration_s", "rest_quantile", "skin_mm"}},
+        {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
+        {"similarity", {"scale_factors", "exponents"}},
+    };
+    for (const auto& part : parts)
+        for (const auto& p : part.parameters) {
+            const auto dot = p.key.find('.');
+            schema[std::string(p.key.substr(0, dot))].push_back(p.key.substr(dot + 1));
+        }
+    return schema;
 }
+void positive(double x, const std::string& f) { require_positive(x, f); }
 }  // namespace
 
 double bridge_vhat(const SlumpScene& s) {
@@ -44,8 +51,8 @@ double cone_volume_below(const SlumpScene& s, double z) {  // frustum: Ï€ z (râ‚
     return M_PI * z * (r0 * r0 + r0 * rz + rz * rz) / 3;
 }
 
-SlumpScene load_slump_scene(const std::string& path) {
-    const io::TomlReader r(path, schema);
+SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPart> parts) {
+    const io::TomlReader r(path, scene_schema(parts));
     SlumpScene s;
     s.source = path;
     constexpr double mm = 1e-3;
@@ -72,13 +79,7 @@ SlumpScene load_slump_scene(const std::string& path) {
     s.rough_floor = r.boolean("floor.rough").value_or(false);
     s.rough_floor_diameter_m = r.checked("floor.rough_diameter_mm", 150, positive) * mm;
 
-    s.material.youngs_modulus = r.checked("contact.youngs_modulus_pa", 5e6, positive);
-    s.material.poisson_ratio = r.checked("contact.poisson_ratio", 0.3, open_interval(-1, 0.5));
-    s.material.restitution = r.checked("contact.restitution", 0.5, [](double x, const std::string& f) {
-        if (!(x > 0 && x <= 1)) throw InputError(f, format_number(x), "(0, 1]");
-    });
-    s.material.friction = r.checked("contact.friction", 0.5, open_interval(0, 10));
-    s.material.rolling_friction = r.checked("contact.rolling_friction", 0.1, open_interval(0, 10));
+    // The law selection, then every registered part's parameters from its table.
     s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
     if (auto m = r.text("contact.rolling_model")) {
         if (*m == "epsd") s.rolling_model = RollingModel::epsd;
@@ -86,30 +87,30 @@ SlumpScene load_slump_scene(const std::string& path) {
         else if (*m == "constant_torque") s.rolling_model = RollingModel::constant_torque;
         else throw InputError(r.where("contact.rolling_model", "contact.rolling_model"), *m, "\"epsd\", \"epsd2\" or \"constant_torque\"");
     }
-    // Ai et al.'s dashpot belongs to their model C (epsd); LIGGGHTS' epsd2 and cdt have none.
-    const bool dashpot = s.rolling_resistance && s.rolling_model == RollingModel::epsd;
-    // Default 0.3, Ai et al.'s (2011) own value for model C: without the dashpot a sphere rocks on the
-    // rolling spring with no loss, and a pile never comes to rest (docs/rest-and-damping.md).
-    s.material.rolling_damping = r.checked("contact.rolling_damping", dashpot ? 0.3 : 0.0, [&](double x, const std::string& f) {
-        if (!(x >= 0 && x <= 1)) throw InputError(f, format_number(x), "[0, 1]");
-        if (x > 0 && !dashpot) throw InputError(f, format_number(x), "0 unless rolling_model = \"epsd\" (only Ai's model C has the dashpot)");
-    });
-
     s.wet = r.boolean("liquid.wet").value_or(true);
     s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);
-    s.liquid.surface_tension_n_per_m = r.checked("liquid.surface_tension_n_per_m", 0.074, positive);
-    if (auto x = r.number("liquid.contact_angle_deg"))
-        r.check("liquid.contact_angle_deg", [&] { s.liquid.contact_angle = ContactAngle(Degrees{*x}); });
-    s.liquid.density_kg_per_m3 = r.checked("liquid.density_kg_per_m3", 1000, positive);
-    s.liquid.moisture_content = r.checked("liquid.moisture_content", 0.045, open_interval(0, 1));
-    s.viscosity_pa_s = r.checked("liquid.viscosity_pa_s", 0, [](double x, const std::string& f) {
-        if (!(x >= 0 && x <= 1e3)) throw InputError(f, format_number(x), "[0, 1000] Pa s (water 1e-3; 0: no viscous part)");
-    });
-    s.min_gap_ratio = r.checked("liquid.min_gap_ratio", 0.01, open_interval(0, 1));
     if (auto v = r.text("liquid.bridge_variant"))
         r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
     if (auto v = r.text("liquid.rupture"))
         r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });
+    for (const auto& part : parts)
+        for (const auto& p : part.parameters) {
+            const std::string key(p.key);
+            p.set(s, r.checked(key, p.default_value, [&](double x, const std::string& f) {
+                if (!p.accepted.contains(x))
+                    throw InputError(f, format_number(x), p.accepted.text() + (p.unit == "1" ? "" : " " + std::string(p.unit)));
+            }));
+        }
+    // Ai et al.'s dashpot belongs to their model C (epsd); LIGGGHTS' epsd2 and cdt have none. Its
+    // default 0.3 is Ai et al.'s own value: without the dashpot a sphere rocks on the rolling spring
+    // with no loss, and a pile never comes to rest (docs/rest-and-damping.md).
+    const bool dashpot = s.rolling_resistance && s.rolling_model == RollingModel::epsd;
+    if (!dashpot) {
+        if (r.number("contact.rolling_damping").value_or(0) > 0)
+            throw InputError(r.where("contact.rolling_damping", "contact.rolling_damping"),
+                             format_number(s.material.rolling_damping), "0 unless rolling_model = \"epsd\" (only Ai's model C has the dashpot)");
+        s.material.rolling_damping = 0;
+    }
 
     s.dt_s = r.checked("run.dt_s", 1e-5, positive);
     s.dt_field = r.where("run.dt_s", "run.dt_s");

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "bridge/mikami.hpp"
-#include "dem/material.hpp"
-#include "similarity/particle_replacement.hpp"
+#include <span>
+
+#include "dem/contact_settings.hpp"
+#include "dem/law_parts.hpp"
 
 namespace demscale::slump {
 
@@ -19,17 +20,15 @@ struct Tolerances {
     double profile = 0.15;  // ‖h̄ − h‖₂ / ‖h‖₂ over the radius
 };
 
-// Which rolling-resistance law a scene uses (when rolling_resistance is on).
-// epsd: Ai et al.'s k_r = 2.25 k_n μ_r² R*², no dashpot; epsd2: LIGGGHTS' epsd2, k_r = k_t R*²;
-// constant_torque: Ai et al.'s model type A (LIGGGHTS' cdt).
-enum class RollingModel { epsd, epsd2, constant_torque };
+using RollingModel = dem::RollingModel;
 
 // How the cone is filled. poured: spheres inserted at random in batches and settled under gravity,
 // then struck off level with the fill height (slump/pour.hpp), the default; lattice: a jittered hcp
 // lattice cut to the cone (slump/fill.hpp), denser and crystalline, kept for comparison.
 enum class FillKind { poured, lattice };
 
-struct SlumpScene {
+// The scene: its contact laws with their parameters (dem::ContactSettings), geometry and protocol.
+struct SlumpScene : dem::ContactSettings {
     std::string source;
     std::string dt_field = "run.dt_s";  // where dt came from, for messages ("file:line: run.dt_s")
     std::string name = "kantro-mini-slump";
@@ -41,20 +40,10 @@ struct SlumpScene {
     double fill_height_m = 0.054;
     unsigned seed = 1;
     FillKind fill = FillKind::poured;
-    dem::Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0.3};  // η_r = 0.3: Ai's dashpot (epsd)
-    bool rolling_resistance = true;
-    RollingModel rolling_model = RollingModel::epsd;
     // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
     // plane, on a jittered hexagonal lattice covering a disc (the usual base of repose-angle tests).
     bool rough_floor = false;
     double rough_floor_diameter_m = 0.15;
-    // Liquid bridges.
-    bool wet = true;
-    bool wet_walls = false;  // Mikami's sphere–wall fit, unverified (2.5× the sphere–plane bound)
-    similarity::Liquid liquid;
-    bridge::MikamiOptions bridge;
-    double viscosity_pa_s = 0;     // the liquid's μ for the bridge's viscous part; 0: static bridge only
-    double min_gap_ratio = 0.01;   // s_min / R, the roughness gap of touching surfaces (viscous part)
     // Protocol.
     double dt_s = 1e-5;
     double gravity = 9.81;
@@ -80,7 +69,8 @@ double bridge_vhat(const SlumpScene& scene);
 double cone_radius_at(const SlumpScene& scene, double z);
 double cone_volume_below(const SlumpScene& scene, double z);
 
-// Throws InputError (file, line, key, value, accepted range) for a bad scene.
-SlumpScene load_slump_scene(const std::string& path);
+// Throws InputError (file, line, key, value, accepted range) for a bad scene. The law parts'
+// parameters are read from their tables (parts: the registered ones, dem/law_parts.hpp).
+SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPart> parts = dem::law_parts());
 
 }  // namespace demscale::slump

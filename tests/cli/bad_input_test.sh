@@ -120,7 +120,7 @@ case $class in
     scene '[liquid]' 'moisture_content = 1'
     scene_commands 'scene.toml:2: liquid.moisture_content = 1: accepted \(0, 1\)' "$work/scene.toml"
     scene '[liquid]' 'contact_angle_deg = 90'
-    scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) degrees' "$work/scene.toml"
+    scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) deg' "$work/scene.toml"
     scene '[contact]' 'rolling_model = "sideways"'
     scene_commands 'scene.toml:2: contact.rolling_model = sideways: accepted "epsd", "epsd2" or "constant_torque"' "$work/scene.toml"
     scene '[contact]' 'rolling_damping = 1.5'

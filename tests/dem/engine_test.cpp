@@ -163,6 +163,27 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     }
 }
 
+TEST_CASE("Unequal spheres: the bridge takes the harmonic-mean radius 2 R1 R2 / (R1 + R2), by hand", "[dem][bridge]") {
+    // Mikami et al. (1998) and Willett et al. (2000) scale unequal spheres by R = 2 R1 R2 / (R1 + R2);
+    // here 1 mm and 2 mm give R = 4/3 mm, the gap measured in that R.
+    const double r1 = 1e-3, r2 = 2e-3, rh = 2 * r1 * r2 / (r1 + r2), gamma = 0.074;
+    const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridgePerPair>;
+    Particles p;
+    p.add({0, 0, 0}, r1, 2200);
+    p.add({r1 + r2, 0, 0}, r2, 2200);  // touching: the bridge forms
+    Simulation sim(p, Wet(Material{}, CohesionMikamiBridgePerPair{k, r2, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r1);
+    for (double hhat : {0.0, 0.05, 0.2}) {
+        INFO("gap / R = " << hhat);
+        sim.particles().position[1] = Vec3(r1 + r2 + hhat * rh, 0, 0);
+        sim.refresh_forces();
+        CHECK(sim.particles().force[0].x() == Approx(M_PI * rh * gamma * bridge::mikami_fhat(k, hhat)).epsilon(1e-12));
+    }
+    sim.particles().position[1] = Vec3(r1 + r2 + 1.001 * k.hhat_rupture * rh, 0, 0);  // beyond rupture in R, within it in R2
+    sim.refresh_forces();
+    CHECK(sim.particles().force[0].x() == 0.0);
+}
+
 TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, across a gap and at contact, booked as lost",
           "[dem][bridge][viscous]") {
     const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01;
@@ -172,21 +193,21 @@ TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, a
     SECTION("the law at a fixed gap and speed, and its loss") {
         CohesionMikamiBridge::State a, b;
         Dissipation la, lb;
-        still.pull(0.0, 0.0, 1e-6, false, a, la), viscous.pull(0.0, 0.0, 1e-6, false, b, lb);  // contact: bridges form
+        still.pull(0.0, r, 0.0, 1e-6, false, a, la), viscous.pull(0.0, r, 0.0, 1e-6, false, b, lb);  // contact: bridges form
         for (double gap_hat : {0.0, 0.001, 0.05, 0.2}) {
             const double gap = gap_hat * r, s = std::max(gap, s_min), dt = 1e-6;
             INFO("gap " << gap_hat << " R");
-            const double f_still = still.pull(-gap, v, dt, false, a, la);
+            const double f_still = still.pull(-gap, r, v, dt, false, a, la);
             Dissipation step;  // this step's loss alone
-            const double f = viscous.pull(-gap, v, dt, false, b, step);
+            const double f = viscous.pull(-gap, r, v, dt, false, b, step);
             const double lubrication = 6 * M_PI * mu * rstar * rstar * v / s;  // Pitois et al. (2000), s << R
             CHECK(f - f_still == Approx(lubrication).epsilon(1e-12));
             CHECK(step.bridge == Approx(lubrication * v * dt).epsilon(1e-12));
-            CHECK(viscous.pull(-gap, -v, dt, false, b, lb) - f_still == Approx(-lubrication).epsilon(1e-12));  // approaching: pushes
+            CHECK(viscous.pull(-gap, r, -v, dt, false, b, lb) - f_still == Approx(-lubrication).epsilon(1e-12));  // approaching: pushes
         }
         // Beyond rupture nothing acts, viscous or not.
-        CHECK(viscous.pull(-1.01 * k.hhat_rupture * r, v, 1e-6, false, b, lb) == 0.0);
-        CHECK(viscous.pull(-0.1 * r, v, 1e-6, false, b, lb) == 0.0);  // no bridge until contact again
+        CHECK(viscous.pull(-1.01 * k.hhat_rupture * r, r, v, 1e-6, false, b, lb) == 0.0);
+        CHECK(viscous.pull(-0.1 * r, r, v, 1e-6, false, b, lb) == 0.0);  // no bridge until contact again
     }
     SECTION("in the engine: a bridged pair separating across a gap feels capillary plus lubrication") {
         using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
@@ -216,18 +237,18 @@ TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) 
     SECTION("the law at a fixed gap and sliding speed, and its loss") {
         CohesionMikamiBridge::State b, none;
         Dissipation lost;
-        viscous.pull(0.0, 0.0, dt, false, b, lost);  // contact: the bridge forms
+        viscous.pull(0.0, r, 0.0, dt, false, b, lost);  // contact: the bridge forms
         const Vec3 sliding(0, v, 0.5 * v);
         for (double gap_hat : {0.0, 0.001, 0.05, 0.2}) {
             INFO("gap " << gap_hat << " R");
             Dissipation step;
-            const Vec3 f = viscous.drag(-gap_hat * r, sliding, dt, false, b, step);
+            const Vec3 f = viscous.drag(-gap_hat * r, r, sliding, dt, false, b, step);
             CHECK((f + by_hand(gap_hat * r) * sliding).norm() < 1e-12 * f.norm());
             CHECK(step.bridge == Approx(by_hand(gap_hat * r) * sliding.squaredNorm() * dt).epsilon(1e-12));
         }
         CHECK(by_hand(0.0) == Approx(6 * M_PI * mu * rstar * (8.0 / 15.0 * std::log(50.0) + 0.9588)));  // s = s_min = R*/50
-        CHECK(viscous.drag(-0.05 * r, sliding, dt, false, none, lost) == Vec3::Zero());   // no bridge: no drag
-        CHECK(still.drag(-0.05 * r, sliding, dt, false, b, lost) == Vec3::Zero());        // no viscosity: no drag
+        CHECK(viscous.drag(-0.05 * r, r, sliding, dt, false, none, lost) == Vec3::Zero());   // no bridge: no drag
+        CHECK(still.drag(-0.05 * r, r, sliding, dt, false, b, lost) == Vec3::Zero());        // no viscosity: no drag
     }
     SECTION("in the engine: a bridged pair sliding and spinning across a gap") {
         using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;

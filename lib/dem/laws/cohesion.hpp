@@ -3,8 +3,9 @@
 //  CohesionMikamiBridge — static pendular liquid bridge (Mikami et al. 1998 via the bridge library):
 //    a bridge forms when two surfaces touch, pulls with F = force_scale·R·γ·F̂(ĥ) (ĥ = gap/R) while
 //    the gap stays below the rupture distance ĥ_c·R, and is gone until the surfaces touch again.
-//    Equal spheres of radius R (monodisperse wet scenes); coefficients computed once, and the force
-//    at contact too: a touching pair costs no exp, one across a gap one.
+//    R is the pair's harmonic-mean radius (unequal spheres as Mikami et al. 1998), V̂ the same for
+//    every pair; coefficients and F̂ at contact computed once: a touching pair costs no exp, one
+//    across a gap one.
 //    Walls use Mikami's sphere–wall coefficients when wet, no bridge when dry.
 //    Ledger: a bridge's potential is minus the work to pull it to rupture (Eq. 2 integrated); it
 //    appears at contact with that negative value, so each formation books the same amount as lost.
@@ -24,6 +25,7 @@
 
 #include "bridge/mikami.hpp"
 #include "dem/contact_pair.hpp"
+#include "dem/law_part.hpp"
 #include "dem/energy.hpp"
 
 namespace demscale::dem {
@@ -34,38 +36,52 @@ struct CohesionNone {
     using StateFor = State;
     double range() const { return 0.0; }
     template <class Lost>
-    double pull(double, double, double, bool, State&, Lost&) const { return 0.0; }
+    double pull(double, double, double, double, bool, State&, Lost&) const { return 0.0; }
     double stored_energy(const ContactPair&, const State&) const { return 0.0; }
     bool holds(const State&) const { return false; }
     bool needs_gap_velocity() const { return false; }
     template <class Lost>
-    Vec3 drag(double, const Vec3&, double, bool, const State&, Lost&) const { return Vec3::Zero(); }
+    Vec3 drag(double, double, const Vec3&, double, bool, const State&, Lost&) const { return Vec3::Zero(); }
 };
 
-struct CohesionMikamiBridge {
+// Which R a bridge takes: the particles' common radius (monodisperse fills: the pair's radii are
+// never read, so the force loop pays nothing for them), or each pair's harmonic mean.
+enum class BridgeRadius { common, per_pair };
+
+template <BridgeRadius Radius = BridgeRadius::common>
+struct MikamiBridge {
     struct State {
         bool bridged = false;
     };
     template <class Lost>
     using StateFor = State;
     bridge::MikamiCoefficients k;                   // sphere–sphere
-    double radius;                                  // R of the equal spheres, m
+    double radius;                                  // the largest particle radius, m: sets the range
     double gamma;                                   // surface tension, N/m
     std::optional<bridge::MikamiCoefficients> wall; // sphere–wall; nullopt: dry walls
     double viscosity = 0;                           // μ of the liquid, Pa s; 0: no viscous part
     double min_gap = 0;                             // s_min, m (roughness: the gap of touching surfaces)
 
-    CohesionMikamiBridge(bridge::MikamiCoefficients sphere, double radius_m, double gamma_n_per_m,
+    // per_pair: each pair's bridge has R = its harmonic-mean radius 2 R_i R_j / (R_i + R_j) (R_i at
+    // a wall; Mikami et al. 1998, Willett et al. 2000) and the same V̂ = V/R³: the liquid of Eq. 5
+    // per bridge grows with the pair's mass. With equal radii both give the same bits.
+    MikamiBridge(bridge::MikamiCoefficients sphere, double radius_m, double gamma_n_per_m,
                          std::optional<bridge::MikamiCoefficients> wall_coefficients, double viscosity_pa_s = 0,
                          double min_gap_m = 0)
         : k(sphere), radius(radius_m), gamma(gamma_n_per_m), wall(wall_coefficients), viscosity(viscosity_pa_s),
-          min_gap(min_gap_m), touching_(bridge_force(k, 0.0)), touching_wall_(wall ? bridge_force(*wall, 0.0) : 0.0),
-          lubrication_(6 * M_PI * viscosity_pa_s * 0.25 * radius_m * radius_m),
-          lubrication_wall_(6 * M_PI * viscosity_pa_s * radius_m * radius_m),
+          min_gap(min_gap_m), fhat0_(bridge::mikami_fhat(k, 0.0)), fhat0_wall_(wall ? bridge::mikami_fhat(*wall, 0.0) : 0.0),
+          touching_(k.force_scale * radius_m * gamma_n_per_m * fhat0_),
+          touching_wall_(wall ? wall->force_scale * radius_m * gamma_n_per_m * fhat0_wall_ : 0.0),
           drag_touching_(drag_coefficient(0.5 * radius_m, min_gap_m)), drag_touching_wall_(drag_coefficient(radius_m, min_gap_m)) {}
 
     // Whether the engine must give pull() and drag() the velocities of a pair across a gap.
     bool needs_gap_velocity() const { return viscosity > 0; }
+
+    // The bridge's R for a pair whose harmonic-mean radius is r, m.
+    DEMSCALE_HOT double bridge_radius(double r) const {
+        if constexpr (Radius == BridgeRadius::per_pair) return r;
+        else return radius;
+    }
 
     // Whether a bridge holds this pair: across a gap, nothing else can act on it.
     bool holds(const State& s) const { return s.bridged; }
@@ -74,26 +90,33 @@ struct CohesionMikamiBridge {
     double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
 
     // Attractive force magnitude (N) along −n on particle i, at overlap δ (m, < 0 a gap) with a
-    // sphere or a wall, the pair separating at v_normal (m/s, > 0 apart; read only with a viscous
-    // part) over a step dt (s, for the ledger); lost: what this step dissipates is added. Needs no
-    // more of the pair than δ and v_n.
+    // sphere or a wall, r the pair's harmonic-mean radius (m), the pair separating at v_normal (m/s,
+    // > 0 apart; read only with a viscous part) over a step dt (s, for the ledger); lost: what this
+    // step dissipates is added. Needs no more of the pair than δ, r and v_n.
     template <class Lost>
-    DEMSCALE_HOT double pull(double overlap, double v_normal, double dt, bool with_wall, State& s, Lost& lost) const {
-        const double capillary = static_pull(overlap, with_wall, s, lost);
+    DEMSCALE_HOT double pull(double overlap, double pair_r, double v_normal, double dt, bool with_wall, State& s, Lost& lost) const {
+        const double r = bridge_radius(pair_r);
+        const double capillary = static_pull(overlap, r, with_wall, s, lost);
         if (viscosity <= 0 || !s.bridged || (with_wall && !wall)) return capillary;
-        const double viscous = (with_wall ? lubrication_wall_ : lubrication_) * v_normal / std::max(-overlap, min_gap);
+        // 6π μ R*² with R* = r/2 (sphere–sphere) or r (wall), in the order that keeps equal radii's bits.
+        const double lubrication = with_wall ? 6 * M_PI * viscosity * r * r : 6 * M_PI * viscosity * 0.25 * r * r;
+        const double viscous = lubrication * v_normal / std::max(-overlap, min_gap);
         lost.bridge += viscous * v_normal * dt;
         return capillary + viscous;
     }
 
     // The tangential lubrication force on particle i (N), sliding at v_tangential (m/s, i relative to
-    // j at the contact point) at overlap δ (m, < 0 a gap) while the bridge (state s, as pull() left
-    // it this step) holds; zero without a viscous part. lost: F_t·v_t dt is added.
+    // j at the contact point) at overlap δ (m, < 0 a gap), r the pair's harmonic-mean radius (m),
+    // while the bridge (state s, as pull() left it this step) holds; zero without a viscous part.
+    // lost: F_t·v_t dt is added.
     template <class Lost>
-    DEMSCALE_HOT Vec3 drag(double overlap, const Vec3& v_tangential, double dt, bool with_wall, const State& s, Lost& lost) const {
+    DEMSCALE_HOT Vec3 drag(double overlap, double pair_r, const Vec3& v_tangential, double dt, bool with_wall, const State& s,
+                           Lost& lost) const {
+        const double r = bridge_radius(pair_r);
         if (viscosity <= 0 || !s.bridged || (with_wall && !wall)) return Vec3::Zero();
-        const double coefficient = overlap >= -min_gap ? (with_wall ? drag_touching_wall_ : drag_touching_)
-                                                       : drag_coefficient(with_wall ? radius : 0.5 * radius, -overlap);
+        const double r_star = with_wall ? r : 0.5 * r;
+        const double coefficient = overlap >= -min_gap && r == radius ? (with_wall ? drag_touching_wall_ : drag_touching_)
+                                                                      : drag_coefficient(r_star, std::max(-overlap, min_gap));
         lost.bridge += coefficient * v_tangential.squaredNorm() * dt;
         return -coefficient * v_tangential;
     }
@@ -101,40 +124,37 @@ struct CohesionMikamiBridge {
     // Potential energy of this pair's bridge, J (≤ 0; 0 without a bridge).
     double stored_energy(const ContactPair& c, const State& s) const {
         if (!s.bridged || (c.wall && !wall)) return 0.0;
-        return potential(c.wall ? *wall : k, c.overlap);
+        return potential(c.wall ? *wall : k, bridge_radius(c.r_harmonic), c.overlap);
     }
 
 private:
     // The static bridge: Eqs. 1-2 (Mikami et al. 1998).
     template <class Lost>
-    DEMSCALE_HOT double static_pull(double overlap, bool with_wall, State& s, Lost& lost) const {
+    DEMSCALE_HOT double static_pull(double overlap, double r, bool with_wall, State& s, Lost& lost) const {
         if (with_wall && !wall) return 0.0;
         const bridge::MikamiCoefficients& law = with_wall ? *wall : k;
         if (overlap >= 0) {  // touching: a bridge forms if there was none, and pulls with F(ĥ = 0)
             if (!s.bridged) {
                 s.bridged = true;
-                lost.bridge -= potential(law, overlap);
+                lost.bridge -= potential(law, r, overlap);
             }
-            return with_wall ? touching_wall_ : touching_;
+            if (Radius == BridgeRadius::common || r == radius) return with_wall ? touching_wall_ : touching_;
+            return law.force_scale * r * gamma * (with_wall ? fhat0_wall_ : fhat0_);
         }
         if (!s.bridged) return 0.0;
-        const double hhat = -overlap / radius;
+        const double hhat = -overlap / r;
         if (hhat > law.hhat_rupture) {  // ruptured: gone until the next contact
             s.bridged = false;
             return 0.0;
         }
-        return bridge_force(law, hhat);
+        return law.force_scale * r * gamma * bridge::mikami_fhat(law, hhat);  // Eq. 1 with Eq. 2, N
     }
 
-    // Eq. 1 with Eq. 2: F = force_scale·R·γ·F̂(ĥ), N.
-    double bridge_force(const bridge::MikamiCoefficients& law, double hhat) const {
-        return law.force_scale * radius * gamma * bridge::mikami_fhat(law, hhat);
-    }
-    // The force at contact, computed once: F̂ holds its ĥ = 0 value under any overlap (mikami_fhat),
-    // so most of a wet pile's pairs, which touch, need no exp.
-    double touching_, touching_wall_;
-    double lubrication_, lubrication_wall_;  // 6π μ R*², N s (sphere–sphere R* = R/2; wall R* = R)
-    double drag_touching_, drag_touching_wall_;  // drag_coefficient at s = s_min, N s/m
+    // F̂ at contact, computed once: F̂ holds its ĥ = 0 value under any overlap (mikami_fhat), so
+    // most of a wet pile's pairs, which touch, need no exp.
+    double fhat0_, fhat0_wall_;
+    double touching_, touching_wall_;  // the force at contact for r = radius, N
+    double drag_touching_, drag_touching_wall_;  // drag_coefficient at s = s_min for r = radius, N s/m
 
     // 6π μ R* (8/15 ln(R*/s) + 0.9588), N s/m, with s = max(gap, s_min); never negative (the
     // bracket would turn at s ≈ 6 R*, far beyond any rupture gap).
@@ -143,9 +163,51 @@ private:
         return 6 * M_PI * viscosity * r_star * std::max(0.0, 8.0 / 15.0 * std::log(r_star / s) + 0.9588);
     }
 
-    double potential(const bridge::MikamiCoefficients& law, double overlap) const {
-        return -law.force_scale * radius * radius * gamma * bridge::mikami_work_to_rupture(law, -overlap / radius);
+    double potential(const bridge::MikamiCoefficients& law, double r, double overlap) const {
+        return -law.force_scale * r * r * gamma * bridge::mikami_work_to_rupture(law, -overlap / r);
     }
 };
+
+using CohesionMikamiBridge = MikamiBridge<BridgeRadius::common>;
+using CohesionMikamiBridgePerPair = MikamiBridge<BridgeRadius::per_pair>;
+
+// Parameters of the static bridge (docs/models/liquid-bridge.md): γ is the candidate of the
+// similarity (γ̄ = γ·S_f^k, Eq. 12); the liquid per bridge follows the particle mass (Eq. 5).
+inline constexpr Parameter bridge_parameters[] = {
+    {"liquid.surface_tension_n_per_m", "surface tension gamma", "N/m", {3, 1, -2}, 0.074, {0, unbounded}, Replacement::surface_tension, {},
+     {}, LiggghtsKind::scalar, [](const ContactSettings& s) { return s.liquid.surface_tension_n_per_m; },
+     [](ContactSettings& s, double x) { s.liquid.surface_tension_n_per_m = x; }},
+    {"liquid.contact_angle_deg", "contact angle theta", "deg", {}, 0, {0, 90, false, true}, Replacement::kept, {}, {},
+     LiggghtsKind::scalar, [](const ContactSettings& s) { return s.liquid.contact_angle.degrees(); },
+     [](ContactSettings& s, double x) { s.liquid.contact_angle = ContactAngle(Degrees{x}); }},
+    {"liquid.density_kg_per_m3", "liquid density", "kg/m^3", {0, 1, 0}, 1000, {0, unbounded}, Replacement::kept, {}, {},
+     LiggghtsKind::scalar, [](const ContactSettings& s) { return s.liquid.density_kg_per_m3; },
+     [](ContactSettings& s, double x) { s.liquid.density_kg_per_m3 = x; }},
+    {"liquid.moisture_content", "moisture content (Eq. 5)", "kg/kg", {}, 0.045, {0, 1}, Replacement::kept, {}, {},
+     LiggghtsKind::scalar, [](const ContactSettings& s) { return s.liquid.moisture_content; },
+     [](ContactSettings& s, double x) { s.liquid.moisture_content = x; }},
+};
+inline constexpr LawPart bridge_part{"static liquid bridge (Mikami et al. 1998)", bridge_parameters,
+                                     [](const ContactSettings& s) { return s.wet; }};
+
+// Parameters of the bridge's viscous part (docs/models/bridge-viscous.md). μ is a viscosity: kept
+// (the same liquid), or scaled by --scale viscosity.
+inline constexpr Parameter bridge_viscous_parameters[] = {
+    {"liquid.viscosity_pa_s", "liquid viscosity mu", "Pa s", {2, 1, -1}, 0, {0, 1000, false, false}, Replacement::scalable,
+     "viscosity", {}, LiggghtsKind::scalar, [](const ContactSettings& s) { return s.viscosity_pa_s; },
+     [](ContactSettings& s, double x) { s.viscosity_pa_s = x; }},
+    {"liquid.min_gap_ratio", "lubrication gap of touching spheres s_min/R", "1", {}, 0.01, {0, 1}, Replacement::kept, {}, {},
+     LiggghtsKind::scalar, [](const ContactSettings& s) { return s.min_gap_ratio; },
+     [](ContactSettings& s, double x) { s.min_gap_ratio = x; }},
+};
+// The normal lubrication damps a pair with c = 6π μ R*² / s_min: an explicit step is stable below
+// 2 m*/c, (8/9) ρ R² (s_min/R) / μ for equal spheres, half that at a wall (R* = R, m* = m).
+inline constexpr LawPart bridge_viscous_part{
+    "viscous part of the liquid bridge (normal lubrication, sliding drag)", bridge_viscous_parameters,
+    [](const ContactSettings& s) { return s.wet && s.viscosity_pa_s > 0; },
+    [](const ContactSettings& s, double radius) {
+        const double pair = 8.0 / 9.0 * s.material.density * radius * radius * s.min_gap_ratio / s.viscosity_pa_s;
+        return TimeScale{s.wet_walls ? pair / 2 : pair, 0.2, "the lubrication time 2 m*/c"};
+    }};
 
 }  // namespace demscale::dem

@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "dem/contact_pair.hpp"
+#include "dem/law_part.hpp"
 #include "dem/material.hpp"
+#include "dem/time_step.hpp"
 
 namespace demscale::dem {
 
@@ -30,5 +32,24 @@ struct NormalHertz {
         return 8.0 / 15.0 * e_star * c.sqrt_r_eff * std::pow(c.overlap, 2.5);
     }
 };
+
+// Parameters (docs/models/hertz-normal.md). E is a stress: kept, or scaled by --scale youngs_modulus.
+inline constexpr Parameter hertz_parameters[] = {
+    {"contact.youngs_modulus_pa", "Young's modulus E", "Pa", {2, 1, -2}, 5e6, {0, unbounded}, Replacement::scalable,
+     "youngs_modulus", "youngsModulus", LiggghtsKind::per_type,
+     [](const ContactSettings& s) { return s.material.youngs_modulus; },
+     [](ContactSettings& s, double x) { s.material.youngs_modulus = x; }},
+    {"contact.poisson_ratio", "Poisson's ratio", "1", {}, 0.3, {-1, 0.5}, Replacement::kept, {}, "poissonsRatio",
+     LiggghtsKind::per_type, [](const ContactSettings& s) { return s.material.poisson_ratio; },
+     [](ContactSettings& s, double x) { s.material.poisson_ratio = x; }},
+    {"contact.restitution", "restitution", "1", {}, 0.5, {0, 1, true, false}, Replacement::kept, {}, "coefficientRestitution",
+     LiggghtsKind::per_type_pair, [](const ContactSettings& s) { return s.material.restitution; },
+     [](ContactSettings& s, double x) { s.material.restitution = x; }},
+};
+
+// A stable step: dt ≤ 0.2 × the Rayleigh time (docs/model.md, time_step.hpp).
+inline constexpr LawPart hertz_part{
+    "Hertz normal contact", hertz_parameters, [](const ContactSettings&) { return true; },
+    [](const ContactSettings& s, double radius) { return TimeScale{rayleigh_time(s.material, radius), 0.2, "the Rayleigh time"}; }};
 
 }  // namespace demscale::dem

@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "dem/contact_pair.hpp"
+#include "dem/law_part.hpp"
 #include "dem/energy.hpp"
 #include "dem/laws/plastic_limit.hpp"
 #include "dem/material.hpp"
@@ -131,5 +132,26 @@ struct IwashitaOdaRollingStiffness {
 
 using RollingEpsd = RollingSpring<AiRollingStiffness>;
 using RollingEpsd2 = RollingSpring<IwashitaOdaRollingStiffness>;
+
+// Parameters (docs/models/rolling.md): μ_r for every rolling model; η_r for Ai's dashpot (epsd).
+inline constexpr Parameter rolling_parameters[] = {
+    {"contact.rolling_friction", "rolling friction", "1", {}, 0.1, {0, 10}, Replacement::kept, {}, "coefficientRollingFriction",
+     LiggghtsKind::per_type_pair, [](const ContactSettings& s) { return s.material.rolling_friction; },
+     [](ContactSettings& s, double x) { s.material.rolling_friction = x; }},
+};
+inline constexpr LawPart rolling_part{"rolling resistance", rolling_parameters,
+                                      [](const ContactSettings& s) { return s.rolling_resistance; }};
+
+inline constexpr Parameter rolling_dashpot_parameters[] = {
+    {"contact.rolling_damping", "rolling damping eta_r", "1", {}, 0.3, {0, 1, false, false}, Replacement::kept, {},
+     "coefficientRollingViscousDamping", LiggghtsKind::per_type_pair,
+     [](const ContactSettings& s) { return s.material.rolling_damping; },
+     [](ContactSettings& s, double x) { s.material.rolling_damping = x; }},
+};
+// LIGGGHTS' epsd3 is Ai's model C with the stiffness prefactor stated apart.
+inline constexpr LawPart rolling_dashpot_part{
+    "rolling spring and dashpot (Ai et al. 2011, model C)", rolling_dashpot_parameters,
+    [](const ContactSettings& s) { return s.rolling_resistance && s.rolling_model == RollingModel::epsd; }, nullptr,
+    "property/global rollingStiffness scalar 2.25"};
 
 }  // namespace demscale::dem

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "dem/contact_pair.hpp"
+#include "dem/law_part.hpp"
 #include "dem/energy.hpp"
 #include "dem/laws/plastic_limit.hpp"
 #include "dem/material.hpp"
@@ -118,5 +119,14 @@ struct LinearTangentialSpring {
 
 using TangentialMindlin = TangentialHistory<MindlinSpring>;
 using TangentialLinear = TangentialHistory<LinearTangentialSpring>;
+
+// Parameters (docs/models/tangential-mindlin.md); the stiffness follows the normal law's E and ν.
+inline constexpr Parameter mindlin_parameters[] = {
+    {"contact.friction", "sliding friction", "1", {}, 0.5, {0, 10}, Replacement::kept, {}, "coefficientFriction",
+     LiggghtsKind::per_type_pair, [](const ContactSettings& s) { return s.material.friction; },
+     [](ContactSettings& s, double x) { s.material.friction = x; }},
+};
+inline constexpr LawPart mindlin_part{"Mindlin tangential contact with Coulomb friction", mindlin_parameters,
+                                      [](const ContactSettings&) { return true; }};
 
 }  // namespace demscale::dem

@@ -1,0 +1,30 @@
+// The contact laws of a scene and the values of their parameters, SI: which law parts act (rolling
+// model, wet or dry, wet walls, the bridge's printed form and rupture law) and what the parameter
+// tables of dem/law_parts.hpp read and write. A slump scene is one of these plus its geometry and
+// protocol.
+#pragma once
+
+#include "bridge/mikami.hpp"
+#include "dem/material.hpp"
+#include "similarity/particle_replacement.hpp"
+
+namespace demscale::dem {
+
+// Which rolling-resistance law acts (when rolling_resistance is on). epsd: Ai et al.'s model C,
+// k_r = 2.25 k_n μ_r² R*², with its dashpot; epsd2: LIGGGHTS' epsd2, k_r = k_t R*²;
+// constant_torque: Ai et al.'s model A (LIGGGHTS' cdt).
+enum class RollingModel { epsd, epsd2, constant_torque };
+
+struct ContactSettings {
+    Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0.3};  // η_r = 0.3: Ai's dashpot (epsd)
+    bool rolling_resistance = true;
+    RollingModel rolling_model = RollingModel::epsd;
+    bool wet = true;          // liquid bridges between particles
+    bool wet_walls = false;   // and to the walls (Mikami's sphere–wall fit, unverified)
+    similarity::Liquid liquid;
+    bridge::MikamiOptions bridge;
+    double viscosity_pa_s = 0;    // the liquid's μ for the bridge's viscous part; 0: static bridge only
+    double min_gap_ratio = 0.01;  // s_min / R, the roughness gap of touching surfaces (viscous part)
+};
+
+}  // namespace demscale::dem

@@ -1,0 +1,249 @@
+// The particle pairs of the engine: the listed pairs in (i, j) order with their contact history,
+// the merge of that history into each new neighbour list, and the forces of a step, gathered so
+// that every particle sums its pairs in ascending pair order whatever the thread count.
+// Threads (OpenMP): pair results go into a per-pair buffer, then each particle gathers its own;
+// on one thread each pair adds to its particles at once, in the same order: the same bits. SI.
+#pragma once
+
+#include <cstdint>
+#include <omp.h>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dem/checkpoint.hpp"
+#include "dem/contact_geometry.hpp"
+#include "dem/energy_ledger.hpp"
+#include "dem/particles.hpp"
+
+namespace demscale::dem {
+
+template <class Law, bool Ledger>
+class PairContacts {
+public:
+    using Lost = typename EnergyLedger<Ledger>::Lost;
+    using LawState = typename Law::template StateFor<Lost>;  // a contact's history
+    // Below this many items a loop runs serially: thread start-up would cost more than the work.
+    static constexpr long parallel_threshold = 512;
+
+    // The new list: the neighbour list's pairs (within the skin of touching: only those can touch
+    // before the next rebuild), with the history of those already listed, plus every pair a liquid
+    // bridge still holds, however far it has stretched. The list need not reach the rupture gap: a
+    // bridge forms only at contact, and this keeps it until it ruptures. Both lists are sorted by
+    // (i, j), so one merge pass does it, and the acting pairs keep their order (the same bits as a
+    // list that reaches the rupture gap).
+    void merge(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& near, const Particles& p, const Law& law) {
+        std::vector<PairIndex> old;
+        std::vector<LawState> old_states;
+        std::vector<std::uint8_t> old_engaged;
+        old.swap(pairs_), old_states.swap(states_), old_engaged.swap(engaged_);
+        pairs_.reserve(near.size()), states_.reserve(near.size()), engaged_.reserve(near.size());
+        auto add = [&](PairIndex q, const LawState& state, std::uint8_t engaged) {
+            pairs_.push_back(q), states_.push_back(state), engaged_.push_back(engaged);
+        };
+        auto keep_bridged = [&](std::size_t k) {
+            if (law.acts_across_gap(old_states[k])) add(old[k], old_states[k], 1);
+        };
+        std::size_t k = 0;
+        for (const auto& [i, j] : near) {
+            for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k) keep_bridged(k);
+            if (k < old.size() && old[k].i == i && old[k].j == j) add(old[k], old_states[k], old_engaged[k]), ++k;
+            else add({i, j}, LawState{}, 0);
+        }
+        for (; k < old.size(); ++k) keep_bridged(k);
+        index(p);
+    }
+
+    // Adds this step's pair forces and torques to the particles (which hold gravity already); the
+    // ledger gets what each thread's pairs dissipated.
+    void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger) {
+        const double reach = law.range();
+        const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p.size());
+        if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
+            // One thread: each pair that acts adds to its two particles at once. Every particle still
+            // sums its pairs in ascending pair order, after gravity: the same bits as the gather
+            // below (which also adds the zeros of pairs that do not act, and the zero torques of
+            // central forces; sums that start at +0 or a non-zero value are unchanged by adding ±0).
+            Lost lost;
+            for (std::size_t k = 0; k < pairs_.size(); ++k) {
+                PairResult r;
+                const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
+                if (acts == Acts::nothing) continue;
+                const PairIndex q = pairs_[k];
+                p.force[q.i] += r.force_i, p.force[q.j] -= r.force_i;
+                if (acts == Acts::contact) p.torque[q.i] += r.torque_i, p.torque[q.j] += r.torque_j;
+            }
+            ledger.add(0, lost);
+            return;
+        }
+        // Threads: pair results into a buffer, then each particle gathers its own (no races).
+#pragma omp parallel
+        {
+            Lost lost;
+#pragma omp for schedule(static)
+            for (long k = 0; k < n_pairs; ++k) {
+                PairResult& r = results_[static_cast<std::size_t>(k)];
+                r = PairResult{};
+                listed_result(p, law, dt, static_cast<std::size_t>(k), reach, lost, r);
+            }
+            ledger.add(omp_get_thread_num(), lost);
+        }
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+        for (long ii = 0; ii < n; ++ii) {
+            const std::size_t i = static_cast<std::size_t>(ii);
+            Vec3 f = p.force[i], t = p.torque[i];
+            for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                const PairResult& r = results_[incidence_[e] / 2];
+                if (incidence_[e] % 2 == 0) f += r.force_i, t += r.torque_i;
+                else f -= r.force_i, t += r.torque_j;
+            }
+            p.force[i] = f;
+            p.torque[i] = t;
+        }
+    }
+
+    // Adds what the listed pairs hold now to e, J (in pair order).
+    void add_stored_energy(StoredEnergy& e, const Particles& p, const Law& law, double dt) const {
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+            const Vec3 d = p.position[i] - p.position[j];
+            const double dist = d.norm();
+            if (dist - p.radius[i] - p.radius[j] > law.range()) continue;
+            e += law.stored_energy(
+                contact_geometry(law, p, dt, i, d, dist, p.velocity[j], p.angular_velocity[j], p.radius[j], shapes_[k], j), states_[k]);
+        }
+    }
+
+    // The first of particle i's pairs (in pair order) whose contribution is not finite, described
+    // ("from its contact with particle 7 (gap … m)"); evaluated again on a copy of its history.
+    std::optional<std::string> non_finite_contact(std::size_t i, const Particles& p, const Law& law, double dt) const {
+        for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+            const PairIndex q = pairs_[incidence_[e] / 2];
+            LawState copy = states_[incidence_[e] / 2];
+            Lost none;  // booked into nothing kept
+            PairResult r;
+            pair_result(p, law, dt, q.i, q.j, shapes_[incidence_[e] / 2], copy, law.range(), none, r);
+            if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
+            const std::size_t other = q.i == i ? q.j : q.i;
+            const double gap = (p.position[i] - p.position[other]).norm() - p.radius[i] - p.radius[other];
+            return ", from its contact with particle " + std::to_string(other) + " (gap " + std::to_string(gap) + " m)";
+        }
+        return std::nullopt;
+    }
+
+    // Checkpoint: the pairs with their history. The engaged flags are not recorded: after a
+    // restore the first step evaluates every pair, as they may hold history.
+    void write(CheckpointWriter& w) const {
+        std::vector<ListedPair> listed(pairs_.size());
+        for (std::size_t k = 0; k < pairs_.size(); ++k) listed[k] = {pairs_[k].i, pairs_[k].j, states_[k]};
+        w.array(listed);
+    }
+    // Returns the listed (i, j), for the neighbour list's own record.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> read(CheckpointReader& r, const Particles& p) {
+        std::vector<ListedPair> records;
+        r.array(records);
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> listed;
+        pairs_.clear(), states_.clear();
+        for (const auto& q : records) listed.emplace_back(q.i, q.j), pairs_.push_back({q.i, q.j}), states_.push_back(q.state);
+        engaged_.assign(pairs_.size(), 1);
+        index(p);
+        return listed;
+    }
+
+    std::size_t size() const { return pairs_.size(); }
+
+private:
+    static_assert(std::is_standard_layout_v<LawState>);  // written as bytes
+
+    struct PairIndex {
+        std::uint32_t i, j;  // i < j
+    };
+    struct ListedPair {  // a checkpoint's record of one listed pair
+        std::uint32_t i, j;
+        LawState state;
+    };
+    struct PairResult {  // what one pair contributes this step
+        Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
+    };
+
+    // For each particle, the pairs it belongs to in ascending pair order (CSR), with its side:
+    // entry = 2·pair + (0 if it is i, 1 if it is j); and each pair's shape.
+    void index(const Particles& p) {
+        incidence_start_.assign(p.size() + 1, 0);
+        for (const auto& q : pairs_) ++incidence_start_[q.i + 1], ++incidence_start_[q.j + 1];
+        for (std::size_t k = 0; k < p.size(); ++k) incidence_start_[k + 1] += incidence_start_[k];
+        incidence_.resize(2 * pairs_.size());
+        std::vector<std::uint32_t> fill(incidence_start_.begin(), incidence_start_.end() - 1);
+        for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+            incidence_[fill[pairs_[k].i]++] = 2 * k;
+            incidence_[fill[pairs_[k].j]++] = 2 * k + 1;
+        }
+        results_.assign(pairs_.size(), PairResult{});
+        shapes_.resize(pairs_.size());
+        for (std::size_t k = 0; k < pairs_.size(); ++k) shapes_[k] = pair_shape(p, pairs_[k].i, pairs_[k].j);
+    }
+
+    // What a listed pair contributes: nothing (beyond the law's reach, or apart with no bridge
+    // holding it), a central force only (a bridge across a gap), or a contact's force and torques.
+    enum class Acts { nothing, central, contact };
+
+    // What listed pair (i, j) of that shape, with history s, contributes now, into out (left zero
+    // where it does not act; a central force leaves the torques zero). A pair that stops acting
+    // has its springs released.
+    template <class L>
+    DEMSCALE_HOT static Acts pair_result(const Particles& p, const Law& law, double dt, std::size_t i, std::size_t j,
+                                         const PairShape& shape, LawState& s, double reach, L& lost, PairResult& out) {
+        const Vec3 d = p.position[i] - p.position[j];
+        const double dist = d.norm(), gap = dist - p.radius[i] - p.radius[j];
+        if (gap > reach || (gap > 0 && !law.acts_across_gap(s))) {
+            law.release(s, lost);
+            return Acts::nothing;
+        }
+        // A bridge across a gap pulls along the line of centres: no contact geometry needed. The
+        // overlap and the force are computed as contact_geometry and force() compute them (same
+        // bits). A viscous bridge also drags across the gap: the full geometry below.
+        if (const double overlap = p.radius[i] + p.radius[j] - dist; gap > 0 && overlap <= 0 && !law.needs_gap_velocity()) {
+            out.force_i = (0.0 - law.pull_apart(overlap, harmonic_radius(p.radius[i], p.radius[j], shape), 0.0, dt, false, s, lost)) *
+                          (d / dist);
+            return Acts::central;
+        }
+        const ContactPair c = contact_geometry(law, p, dt, i, d, dist, p.velocity[j], p.angular_velocity[j], p.radius[j], shape, j);
+        const ContactForce f = law.force(c, s, lost);
+        out.force_i = f.on_i;
+        if (c.overlap <= 0 && !law.needs_gap_velocity()) return Acts::central;  // gap rounded to 0: the same central pull
+        const double li = p.radius[i] - 0.5 * c.overlap, lj = p.radius[j] - 0.5 * c.overlap;
+        out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
+        out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+        return Acts::contact;
+    }
+
+    // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is
+    // zero) that is surely apart is passed over: it would do nothing and keep its zero state, so it
+    // needs no square root and no access to its state. The margin on the squared distance (1e-12
+    // relative) is far above rounding: the decision is pair_result's own.
+    template <class L>
+    DEMSCALE_HOT Acts listed_result(const Particles& p, const Law& law, double dt, std::size_t k, double reach, L& lost,
+                                    PairResult& out) {
+        const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+        if (!engaged_[k]) {
+            const double touch = p.radius[i] + p.radius[j];
+            if ((p.position[i] - p.position[j]).squaredNorm() > touch * touch * (1 + 1e-12)) return Acts::nothing;
+        }
+        const Acts acts = pair_result(p, law, dt, i, j, shapes_[k], states_[k], reach, lost, out);
+        engaged_[k] = acts != Acts::nothing;  // released: zero again
+        return acts;
+    }
+
+    // The listed pairs in (i, j) order, each with its contact history and whether that history may
+    // be non-zero (0: surely zero). Apart, three arrays: the pair loop reads a pair's history only
+    // when it may act.
+    std::vector<PairIndex> pairs_;
+    std::vector<LawState> states_;
+    std::vector<std::uint8_t> engaged_;
+    std::vector<PairShape> shapes_;
+    std::vector<PairResult> results_;
+    std::vector<std::uint32_t> incidence_start_, incidence_;
+};
+
+}  // namespace demscale::dem

@@ -1,0 +1,148 @@
+// The particle–wall contacts of the engine: per wall and particle the contact history and whether
+// it may be non-zero, each particle's shape against a wall, and the forces of a step, particle by
+// particle (a particle's walls in wall order), with the walls' power for the ledger. SI units.
+#pragma once
+
+#include <cstdint>
+#include <omp.h>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dem/checkpoint.hpp"
+#include "dem/contact_geometry.hpp"
+#include "dem/energy_ledger.hpp"
+#include "dem/particles.hpp"
+#include "dem/walls.hpp"
+
+namespace demscale::dem {
+
+template <class Law, bool Ledger>
+class WallContacts {
+public:
+    using Lost = typename EnergyLedger<Ledger>::Lost;
+    using LawState = typename Law::template StateFor<Lost>;
+    static constexpr long parallel_threshold = 512;
+
+    WallContacts(std::size_t walls, std::size_t particles)
+        : state_(walls, std::vector<LawState>(particles)), engaged_(walls, std::vector<std::uint8_t>(particles, 0)) {}
+
+    // Each particle's shape against any wall, once its radius and mass are known.
+    void index(const Particles& p) {
+        shapes_.resize(p.size());
+        for (std::size_t i = 0; i < p.size(); ++i) shapes_[i] = pair_shape(p, i, a_wall);
+    }
+
+    // Adds this step's wall forces and torques to the particles; the ledger gets each thread's
+    // losses and the walls' power. Throws naming the particle, wall and step when a particle has
+    // left the domain through a wall.
+    void add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt, std::size_t step,
+                    EnergyLedger<Ledger>& ledger) {
+        const double reach = law.range();
+        const long n = static_cast<long>(p.size());
+        std::string wall_error;
+        bounds_.clear();
+        for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
+        // Scalars each thread keeps in its own registers (shared ones are read through memory).
+#pragma omp parallel if (n * static_cast<long>(walls.size()) > parallel_threshold) firstprivate(time, dt, reach, n)
+        {
+            Lost lost;
+            double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
+#pragma omp for schedule(static)
+            for (long ii = 0; ii < n; ++ii) {
+                const std::size_t i = static_cast<std::size_t>(ii);
+                if (p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
+                for (std::size_t w = 0; w < walls.size(); ++w) {
+                    std::uint8_t& engaged = engaged_[w][i];
+                    auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
+                        if (engaged) law.release(state_[w][i], lost), engaged = 0;
+                    };
+                    if (bounds_[w].surely_farther_than(p.position[i], p.radius[i] + reach)) {
+                        out_of_reach();  // as the range check below would
+                        continue;
+                    }
+                    const WallPoint wp = closest_wall_point(walls[w], p.position[i], time);
+                    if (wp.behind) {
+#pragma omp critical
+                        wall_error = "particle " + std::to_string(i) + " left the domain through wall " + std::to_string(w) +
+                                     " at step " + std::to_string(step);
+                        continue;
+                    }
+                    const Vec3 d = p.position[i] - wp.point;
+                    const double dist = d.norm();
+                    if (dist - p.radius[i] > reach) {
+                        out_of_reach();
+                        continue;
+                    }
+                    engaged = 1;
+                    const ContactPair c = contact_geometry(law, p, dt, i, d, dist, wp.velocity, Vec3::Zero(), 0.0, shapes_[i], a_wall);
+                    const ContactForce f = law.force(c, state_[w][i], lost);
+                    p.force[i] += f.on_i;
+                    p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
+                    if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
+                }
+            }
+            ledger.add(omp_get_thread_num(), lost, wall_power);
+        }
+        if (!wall_error.empty()) throw std::runtime_error(wall_error);
+    }
+
+    // The contact geometry of particle i with a wall, if within the law's range of it.
+    std::optional<ContactPair> contact(const Particles& p, const Law& law, const Wall& wall, double time, double dt,
+                                       std::size_t i) const {
+        if (p.fixed[i]) return std::nullopt;
+        const WallPoint wp = closest_wall_point(wall, p.position[i], time);
+        const Vec3 d = p.position[i] - wp.point;
+        const double dist = d.norm();
+        if (wp.behind || dist - p.radius[i] > law.range()) return std::nullopt;
+        return contact_geometry(law, p, dt, i, d, dist, wp.velocity, Vec3::Zero(), 0.0, shapes_[i], a_wall);
+    }
+
+    // Adds what the wall contacts hold now to e, J (wall by wall, particle by particle).
+    void add_stored_energy(StoredEnergy& e, const Particles& p, const Law& law, const std::vector<Wall>& walls, double time,
+                           double dt) const {
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            for (std::size_t i = 0; i < p.size(); ++i)
+                if (const auto c = contact(p, law, walls[w], time, dt, i)) e += law.stored_energy(*c, state_[w][i]);
+    }
+
+    // Forgets wall `index` with its contact history; the energy its contacts held leaves with it,
+    // booked as work the wall took away.
+    void remove(std::size_t index, const Particles& p, const Law& law, const Wall& wall, double time, double dt,
+                EnergyLedger<Ledger>& ledger) {
+        if constexpr (Ledger)
+            for (std::size_t i = 0; i < p.size(); ++i)
+                if (const auto c = contact(p, law, wall, time, dt, i)) ledger.wall_took(law.stored_energy(*c, state_[index][i]).total());
+        state_.erase(state_.begin() + static_cast<long>(index));
+        engaged_.erase(engaged_.begin() + static_cast<long>(index));
+    }
+
+    // The first wall (in wall order) particle i touches, described ("from its contact with wall 1
+    // (overlap … m)").
+    std::optional<std::string> contact_report(std::size_t i, const Particles& p, const Law& law, const std::vector<Wall>& walls,
+                                              double time, double dt) const {
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            if (const auto c = contact(p, law, walls[w], time, dt, i))
+                return ", from its contact with wall " + std::to_string(w) + " (overlap " + std::to_string(c->overlap) + " m)";
+        return std::nullopt;
+    }
+
+    // Checkpoint: the histories, wall by wall. The engaged flags are not recorded: after a restore
+    // the first step evaluates every contact.
+    void write(CheckpointWriter& w) const {
+        for (const auto& states : state_) w.array(states);
+    }
+    void read(CheckpointReader& r, std::size_t particles) {
+        for (auto& states : state_) r.array(states);
+        for (auto& e : engaged_) e.assign(particles, 1);
+    }
+
+private:
+    std::vector<std::vector<LawState>> state_;        // per wall, per particle
+    std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
+    std::vector<PairShape> shapes_;                   // per particle, against any wall
+    std::vector<WallBound> bounds_;                   // this step's, one per wall
+};
+
+}  // namespace demscale::dem

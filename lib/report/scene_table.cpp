@@ -1,0 +1,43 @@
+#include "report/scene_table.hpp"
+
+#include "core/input_error.hpp"
+
+namespace demscale::report {
+
+io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std::span<const dem::LawPart> parts) {
+    io::Table t;
+    t.title = "Slump scene (" + label + ")";
+    t.columns = {"parameter", "value", "unit"};
+    auto add = [&](const std::string& name, double value, const std::string& unit) { t.rows.push_back({name, value, unit}); };
+    auto say = [&](const std::string& name, const std::string& value) { t.rows.push_back({name, value, std::string("-")}); };
+    t.rows.push_back({"cone bottom / top inner diameter",
+                      format_short(s.bottom_diameter_m * 1e3) + " / " + format_short(s.top_diameter_m * 1e3), std::string("mm")});
+    add("cone height", s.height_m * 1e3, "mm");
+    add("cone lift speed", s.lift_speed_m_per_s, "m/s");
+    add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
+    add("particle density", s.material.density, "kg/m^3");
+    add("fill height", s.fill_height_m * 1e3, "mm");
+    say("fill", s.fill == slump::FillKind::poured ? "poured in batches, struck off level" : "hcp lattice");
+    say("rolling resistance", !s.rolling_resistance                                  ? "none"
+                              : s.rolling_model == slump::RollingModel::epsd2        ? "epsd2 (k_r = k_t R*^2)"
+                              : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"
+                                                                                       : "epsd (Ai's model C, with dashpot)");
+    say("bridge model", s.wet ? std::string(bridge::to_string(s.bridge.variant)) + ", rupture " +
+                                    std::string(bridge::to_string(s.bridge.rupture))
+                              : "none (dry)");
+    say("bridges to the floor and cone", s.wet_walls ? "yes" : "no");
+    // Each part that acts, with its parameters as its table states them.
+    for (const auto& part : parts)
+        if (part.active(s))
+            for (const auto& p : part.parameters) add(std::string(p.label), p.get(s), std::string(p.unit));
+    add("time step (fine run)", s.dt_s * 1e6, "us");
+    add("gravity", s.gravity, "m/s^2");
+    t.rows.push_back({"settle / spread time limits", format_short(s.settle_time_s) + " / " + format_short(s.spread_time_s),
+                      std::string("s")});
+    add("at rest: this share of the particles", s.rest_quantile, "1");
+    add("... slower than", s.rest_speed_m_per_s, "m/s");
+    add("... for", s.rest_duration_s, "s");
+    return t;
+}
+
+}  // namespace demscale::report

@@ -1,0 +1,129 @@
+// The law parts' declarations: each table against independent sources (the struct defaults, the
+// similarity catalogue's dimensions, a hand derivation of the viscous time step), and the promise
+// that a parameter added to a table reaches the scene reader, the cache key and the report with no
+// other edit.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "core/input_error.hpp"
+#include "dem/law_parts.hpp"
+#include "report/scene_table.hpp"
+#include "similarity/quantity_catalogue.hpp"
+#include "slump/coarse_grain.hpp"
+#include "slump/run_cache.hpp"
+#include "slump/slump_run.hpp"
+#include "slump/slump_scene.hpp"
+
+using namespace demscale;
+using namespace demscale::dem;
+
+namespace {
+std::string write_scene(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / name;
+    std::ofstream(path) << text;
+    return path.string();
+}
+}  // namespace
+
+TEST_CASE("Every law parameter: default inside its range and equal to the settings' own default, keys unique",
+          "[dem][parameters]") {
+    const ContactSettings defaults;
+    std::vector<std::string_view> keys;
+    for (const auto& part : law_parts())
+        for (const auto& p : part.parameters) {
+            INFO(p.key);
+            CHECK(p.accepted.contains(p.default_value));
+            CHECK(p.get(defaults) == Approx(p.default_value).epsilon(1e-15));
+            CHECK(std::count(keys.begin(), keys.end(), p.key) == 0);
+            keys.push_back(p.key);
+            CHECK((p.replacement != Replacement::scalable || !p.scale_name.empty()));
+            // Setting and getting round-trips in the input unit (degrees for the contact angle).
+            ContactSettings s;
+            const double x = p.accepted.hi == unbounded ? 2 * p.default_value + 1 : 0.5 * (p.accepted.lo + p.accepted.hi);
+            p.set(s, x);
+            CHECK(p.get(s) == Approx(x).epsilon(1e-14));
+        }
+    CHECK(keys.size() == 12);
+}
+
+TEST_CASE("Law parameters carry the similarity catalogue's dimensions", "[dem][parameters][similarity]") {
+    const std::pair<std::string_view, std::string_view> same[] = {{"contact.youngs_modulus_pa", "youngs_modulus"},
+                                                                   {"liquid.surface_tension_n_per_m", "surface_tension"},
+                                                                   {"liquid.viscosity_pa_s", "viscosity"}};
+    for (const auto& [key, quantity] : same)
+        for (const auto& part : law_parts())
+            for (const auto& p : part.parameters)
+                if (p.key == key) CHECK(p.dimension == similarity::find_quantity(quantity, "test").dimension);
+}
+
+TEST_CASE("The viscous bridge limits the step to 0.2 x 2 m*/c, derived by hand", "[dem][parameters][timestep]") {
+    ContactSettings s;
+    s.viscosity_pa_s = 0.5, s.min_gap_ratio = 0.01, s.material.density = 2200;
+    const double r = 1e-3, m = 2200 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    const double c = 6 * std::numbers::pi * 0.5 * (r / 2) * (r / 2) / (0.01 * r);  // 6π μ R*² / s_min
+    const auto limits = time_step_limits(s, r);
+    REQUIRE(limits.size() == 2);  // Hertz and the viscous part
+    CHECK(limits[1].seconds == Approx(2 * (m / 2) / c).epsilon(1e-12));
+    CHECK(limits[0].seconds == Approx(rayleigh_time(s.material, r)).epsilon(1e-15));
+    s.viscosity_pa_s = 0;
+    CHECK(time_step_limits(s, r).size() == 1);  // no viscous part, no limit of its own
+    // A scene whose viscous limit binds is refused, naming it.
+    slump::SlumpScene scene;
+    scene.viscosity_pa_s = 0.5, scene.dt_s = 1e-5;  // 0.2 × 2m*/c = 3.9 µs here
+    CHECK_THROWS_WITH(slump::check_slump_time_step(scene, false), Catch::Matchers::Contains("lubrication time"));
+    CHECK_NOTHROW(slump::check_slump_time_step(scene, true));
+}
+
+TEST_CASE("Coarse-graining follows each table's rule: gamma S_f^k, E and mu by their dimensions when named",
+          "[dem][parameters][coarse]") {
+    slump::SlumpScene fine;
+    fine.viscosity_pa_s = 1e-3;
+    const double sf = 1.96;
+    for (double k : {1.0, 2.0, 3.0}) {
+        // S_L = S_f, S_ρ = 1 and γ ∝ ρ L³ T⁻² give S_T = S_f^((3−k)/2): E ∝ ρ L² T⁻² needs S_f^(k−1),
+        // μ ∝ ρ L² T⁻¹ needs S_f^((1+k)/2).
+        const auto c = slump::coarse_grained(fine, {sf, k, {"youngs_modulus", "viscosity"}});
+        CHECK(c.liquid.surface_tension_n_per_m == Approx(0.074 * std::pow(sf, k)).epsilon(1e-14));
+        CHECK(c.material.youngs_modulus == Approx(5e6 * std::pow(sf, k - 1)).epsilon(1e-12));
+        CHECK(c.viscosity_pa_s == Approx(1e-3 * std::pow(sf, (1 + k) / 2)).epsilon(1e-12));
+        CHECK(c.material.friction == fine.material.friction);
+        CHECK(c.liquid.moisture_content == fine.liquid.moisture_content);
+    }
+}
+
+TEST_CASE("A parameter added to a law's table reaches the scene reader, the cache key and the report", "[dem][parameters]") {
+    // A part that declares one parameter, stored where no shipped part looks (the linear law's k).
+    static constexpr Parameter extra[] = {
+        {"contact.linear_stiffness_n_per_m", "linear spring stiffness k", "N/m", {3, 1, -2}, 100, {0, unbounded},
+         Replacement::kept, {}, {}, LiggghtsKind::scalar, [](const ContactSettings& s) { return s.material.linear_stiffness; },
+         [](ContactSettings& s, double x) { s.material.linear_stiffness = x; }}};
+    static constexpr LawPart part{"test part", extra, [](const ContactSettings&) { return true; }};
+    std::vector<LawPart> parts(law_parts().begin(), law_parts().end());
+    parts.push_back(part);
+
+    const auto path = write_scene("demscale_extra_parameter.toml", "[contact]\nlinear_stiffness_n_per_m = 1234\n");
+    // The reader knows the key only through the table.
+    CHECK_THROWS_WITH(slump::load_slump_scene(path), Catch::Matchers::Contains("linear_stiffness_n_per_m"));
+    const auto s = slump::load_slump_scene(path, parts);
+    CHECK(s.material.linear_stiffness == 1234);
+    CHECK(slump::load_slump_scene(write_scene("demscale_no_extra.toml", "[scene]\n"), parts).material.linear_stiffness == 100);
+    CHECK_THROWS_WITH(slump::load_slump_scene(write_scene("demscale_bad_extra.toml", "[contact]\nlinear_stiffness_n_per_m = -1\n"),
+                                              parts),
+                      Catch::Matchers::Contains("linear_stiffness_n_per_m = -1: accepted a finite number > 0 N/m"));
+    // The cache key follows its value.
+    auto t = s;
+    CHECK(slump::scene_key(s, parts) == slump::scene_key(t, parts));
+    t.material.linear_stiffness = 1235;
+    CHECK(slump::scene_key(s, parts) != slump::scene_key(t, parts));
+    CHECK(slump::scene_key(s) == slump::scene_key(t));  // without the part, the value is not an input
+    // The report lists it with its unit.
+    const auto table = report::scene_table(s, "test", parts);
+    bool listed = false;
+    for (const auto& row : table.rows)
+        if (std::get<std::string>(row[0]) == "linear spring stiffness k")
+            listed = std::get<double>(row[1]) == 1234 && std::get<std::string>(row[2]) == "N/m";
+    CHECK(listed);
+}
