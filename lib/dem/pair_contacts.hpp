@@ -24,8 +24,6 @@ class PairContacts {
 public:
     using Lost = typename EnergyLedger<Ledger>::Lost;
     using LawState = typename Law::template StateFor<Lost>;  // a contact's history
-    // Below this many items a loop runs serially: thread start-up would cost more than the work.
-    static constexpr long parallel_threshold = 512;
 
     // The new list: the neighbour list's pairs (within the skin of touching: only those can touch
     // before the next rebuild), with the history of those already listed, plus every pair a liquid

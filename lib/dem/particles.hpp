@@ -11,6 +11,10 @@ namespace demscale::dem {
 
 using Vec3 = Eigen::Vector3d;
 
+// Loops over fewer items than this (particles, pairs) run on one thread: starting threads would
+// cost more than the work.
+inline constexpr long parallel_threshold = 512;
+
 struct Particles {
     std::vector<Vec3> position;          // m
     std::vector<Vec3> velocity;          // m/s

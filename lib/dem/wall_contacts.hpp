@@ -23,7 +23,6 @@ class WallContacts {
 public:
     using Lost = typename EnergyLedger<Ledger>::Lost;
     using LawState = typename Law::template StateFor<Lost>;
-    static constexpr long parallel_threshold = 512;
 
     WallContacts(std::size_t walls, std::size_t particles)
         : state_(walls, std::vector<LawState>(particles)), engaged_(walls, std::vector<std::uint8_t>(particles, 0)) {}
