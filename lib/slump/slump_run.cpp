@@ -268,13 +268,14 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
             return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd2>(s.material, cohesion));
         return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd>(s.material, cohesion));
     };
-    // A start state with unequal radii (another engine's fill) takes each pair's harmonic-mean
-    // radius in its bridges; the protocol's own fills are monodisperse.
+    // The protocol's own fills are monodisperse. A wet start state with unequal radii (another
+    // engine's fill) is refused rather than bridged with one R: the per-pair bridge
+    // (CohesionMikamiBridgePerPair) would double the compiled wet engines, for no shipped scene.
     const auto [smallest, largest] = std::minmax_element(particles.radius.begin(), particles.radius.end());
-    const bool unequal = smallest != particles.radius.end() && *smallest != *largest;
-    if (!s.wet) res = with_rolling(CohesionNone{});
-    else if (unequal) res = with_rolling(bridge_for<CohesionMikamiBridgePerPair>(s, *largest));
-    else res = with_rolling(bridge_for<CohesionMikamiBridge>(s, s.radius_m));
+    if (s.wet && smallest != particles.radius.end() && *smallest != *largest)
+        throw InputError("--start", "radii from " + format_short(*smallest * 1e3) + " to " + format_short(*largest * 1e3) + " mm",
+                         "spheres of one radius for a wet scene (equal-sphere bridges; docs/models/liquid-bridge.md)");
+    res = s.wet ? with_rolling(bridge_for<CohesionMikamiBridge>(s, s.radius_m)) : with_rolling(CohesionNone{});
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

@@ -179,7 +179,13 @@ case $case_name in
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
-    [ ! -e "$work/s" ] || fail "a failed run created output" ;;
+    [ ! -e "$work/s" ] || fail "a failed run created output"
+    # A wet run from a start state of unequal spheres is refused, not bridged with one radius.
+    printf '# demscale particle state (SI)\nx,y,z,vx,vy,vz,wx,wy,wz,radius,density\n0,0,0.0022,0,0,0,0,0,0,0.0022,2200\n0.006,0,0.003,0,0,0,0,0,0,0.003,2200\n' \
+      >"$work/mixed.csv"
+    expect 2 '--start = radii from 2.2 to 3 mm: accepted spheres of one radius for a wet scene' -- \
+      "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --start "$work/mixed.csv" --out "$work/s"
+    [ ! -e "$work/s" ] || fail "a refused run created output" ;;
   check_exponent_pass_and_fail)
     small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --cache "$work/cache" --out "$work/c" --no-png)
     # Loose tolerances pass (exit 0), tight ones fail (exit 1) on the very same runs; one seed cannot
