@@ -22,7 +22,7 @@ std::pair<std::size_t, std::size_t> first_number(const std::string& s) {
                  (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
             std::size_t j = i;
             while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.' || s[j] == 'e')) ++j;
-            if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j])) && s[j] != ' ') continue;  // part of a word
+            if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j]))) continue;  // part of a word
             return {i, j - i};
         }
     }

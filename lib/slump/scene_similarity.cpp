@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/input_error.hpp"
+#include "dem/law_parts.hpp"
 
 namespace demscale::slump {
 
@@ -34,15 +35,10 @@ std::vector<std::string> differing_inputs(const io::TableConfig& c, const SlumpS
     compare("particle.physical_radius_mm", "particles.radius_mm", c.physical_radius_m, s.radius_m, 1e-3);
     if (c.solid_density_kg_per_m3)
         compare("particle.density_kg_per_m3", "particles.density_kg_per_m3", *c.solid_density_kg_per_m3, s.material.density, 1);
-    for (const std::string key : {"surface_tension_n_per_m", "contact_angle_deg", "density_kg_per_m3", "moisture_content"}) {
-        auto value = [&](const similarity::Liquid& l) {
-            return key == "surface_tension_n_per_m" ? l.surface_tension_n_per_m
-                   : key == "contact_angle_deg"     ? l.contact_angle.degrees()
-                   : key == "density_kg_per_m3"     ? l.density_kg_per_m3
-                                                    : l.moisture_content;
-        };
-        compare("liquid." + key, "liquid." + key, value(c.liquid), value(s.liquid), 1);
-    }
+    // The liquid as the bridge's parameter table reads it: the same keys in both files.
+    dem::ContactSettings configured;
+    configured.liquid = c.liquid;
+    for (const auto& p : dem::bridge_parameters) compare(std::string(p.key), std::string(p.key), p.get(configured), p.get(s), 1);
     compare_name("bridge.variant", "liquid.bridge_variant", bridge::to_string(c.bridge.variant), bridge::to_string(s.bridge.variant));
     compare_name("bridge.rupture", "liquid.rupture", bridge::to_string(c.bridge.rupture), bridge::to_string(s.bridge.rupture));
     return out;
