@@ -91,7 +91,7 @@ int run_bridge_error(const Options& o) {
 }
 
 // Cost of each optional contact law (issue #4): the scene is filled and settled once, then the
-// lift-and-spread phase runs from that same settled fill, dry and wet, under each rolling law
+// lift-and-spread phase runs from that same settled fill, dry, wet and with SJKR adhesion, under each rolling law
 // (each its own compiled engine), for the whole spread time (no stop at rest, so every row steps
 // equally). EPSD runs also with Ai's rolling dashpot (η_r = 0.3), and with the energy ledger.
 int run_dem_bench(const Options& o) {
@@ -116,12 +116,17 @@ int run_dem_bench(const Options& o) {
     };
     const Combination combinations[] = {{"", false, 0},       {"+epsd", false, 0}, {"+epsd", false, 0.3},
                                         {"+epsd2", false, 0}, {"+cdt", false, 0},  {"+epsd", true, 0}};
+    // Cohesion: none, the Mikami bridge, SJKR adhesion (the scene's k, else 2e4 J/m³).
+    enum class Cohesion { dry, mikami, sjkr };
+    const double k_sjkr = scene.cohesion_energy_density > 0 ? scene.cohesion_energy_density : 2e4;
     std::vector<double> dry_rate(std::size(combinations));
-    for (const bool wet : {false, true})
+    for (const Cohesion cohesion : {Cohesion::dry, Cohesion::mikami, Cohesion::sjkr})
         for (std::size_t n = 0; n < std::size(combinations); ++n) {
             const std::string rolling = combinations[n].rolling;
+            const bool wet = cohesion == Cohesion::mikami;
             auto s = scene;
             s.wet = wet;
+            s.cohesion_energy_density = cohesion == Cohesion::sjkr ? k_sjkr : 0;
             s.rolling_resistance = !rolling.empty();
             s.rolling_model = rolling == "+cdt"     ? slump::RollingModel::constant_torque
                               : rolling == "+epsd2" ? slump::RollingModel::epsd2
@@ -132,9 +137,12 @@ int run_dem_bench(const Options& o) {
             phases.energy_ledger = combinations[n].ledger;
             const auto r = slump::run_slump(s, {}, false, phases);
             const double rate = double(r.particles) * double(r.steps) / r.wall_s;
-            if (!wet) dry_rate[n] = rate;
+            if (cohesion == Cohesion::dry) dry_rate[n] = rate;
             const std::string dashpot = combinations[n].rolling_damping > 0 ? " dashpot eta_r=" + format_number(combinations[n].rolling_damping) : "";
-            t.rows.push_back({std::string(wet ? "hertz+mindlin+mikami" : "hertz+mindlin") + rolling + dashpot +
+            const char* laws = cohesion == Cohesion::mikami ? "hertz+mindlin+mikami"
+                               : cohesion == Cohesion::sjkr ? "hertz+mindlin+sjkr"
+                                                            : "hertz+mindlin";
+            t.rows.push_back({std::string(laws) + rolling + dashpot +
                                   (combinations[n].ledger ? " +energy ledger" : ""),
                               double(r.particles), double(r.steps), r.wall_s, rate, dry_rate[n] / rate,
                               dry_rate[0] / rate});

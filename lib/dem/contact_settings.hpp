@@ -25,6 +25,7 @@ struct ContactSettings {
     bridge::MikamiOptions bridge;
     double viscosity_pa_s = 0;    // the liquid's μ for the bridge's viscous part; 0: static bridge only
     double min_gap_ratio = 0.01;  // s_min / R, the roughness gap of touching surfaces (viscous part)
+    double cohesion_energy_density = 0;  // k_c, J/m³, of the simplified JKR adhesion (dry scenes); 0: none
 };
 
 }  // namespace demscale::dem

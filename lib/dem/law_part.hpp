@@ -69,6 +69,12 @@ struct LawPart {
     // The time scale its stiffness or damping imposes on particles of radius R (m); none: nullptr.
     TimeScale (*time_scale)(const ContactSettings&, double radius_m) = nullptr;
     std::string_view liggghts_extra = {};    // a fixed "property/global ..." the LIGGGHTS deck needs when it acts
+    std::string_view liggghts_model = {};    // its words in the deck's pair style ("cohesion sjkr"); empty: none
+    std::string_view liggghts_setting = {};  // a keyword/value the pair style then needs ("tangential_reduce on")
+    // Whether a scene may give its parameters values other than their defaults (nullptr: always);
+    // the scene reader refuses one otherwise, with `allowed_text` as the accepted value.
+    bool (*allowed)(const ContactSettings&) = nullptr;
+    std::string_view allowed_text = {};
 };
 
 }  // namespace demscale::dem

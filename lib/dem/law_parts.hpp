@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dem/law_part.hpp"
+#include "dem/laws/adhesion_sjkr.hpp"
 #include "dem/laws/cohesion.hpp"
 #include "dem/laws/normal_hertz.hpp"
 #include "dem/laws/rolling.hpp"
@@ -21,6 +22,7 @@ inline constexpr LawPart registered_law_parts[] = {
     rolling_dashpot_part,
     bridge_part,
     bridge_viscous_part,
+    sjkr_part,
 };
 
 inline std::span<const LawPart> law_parts() { return registered_law_parts; }

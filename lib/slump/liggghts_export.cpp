@@ -67,7 +67,15 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
                                 : model == slump::RollingModel::epsd2         ? " rolling_friction epsd2"
                                                                               : " rolling_friction epsd3";
-    const std::string laws = "model hertz tangential history" + (sc.rolling_resistance ? rolling : std::string());
+    // The acting parts' own pair style words (a cohesion model) go before the rolling model, their
+    // keyword/value settings after all models.
+    std::string models, settings;
+    for (const auto& part : dem::law_parts())
+        if (part.active(sc)) {
+            if (!part.liggghts_model.empty()) models += " " + std::string(part.liggghts_model);
+            if (!part.liggghts_setting.empty()) settings += " " + std::string(part.liggghts_setting);
+        }
+    const std::string laws = "model hertz tangential history" + models + (sc.rolling_resistance ? rolling : std::string()) + settings;
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";

@@ -275,7 +275,9 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     if (s.wet && smallest != particles.radius.end() && *smallest != *largest)
         throw InputError("--start", "radii from " + format_short(*smallest * 1e3) + " to " + format_short(*largest * 1e3) + " mm",
                          "spheres of one radius for a wet scene (equal-sphere bridges; docs/models/liquid-bridge.md)");
-    res = s.wet ? with_rolling(bridge_for<CohesionMikamiBridge>(s, s.radius_m)) : with_rolling(CohesionNone{});
+    res = s.wet                  ? with_rolling(bridge_for<CohesionMikamiBridge>(s, s.radius_m))
+          : sjkr_part.active(s) ? with_rolling(CohesionSjkr{s.cohesion_energy_density})
+                                : with_rolling(CohesionNone{});
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

@@ -101,6 +101,14 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
                     throw InputError(f, format_number(x), p.accepted.text() + (p.unit == "1" ? "" : " " + std::string(p.unit)));
             }));
         }
+    // A part whose parameters this scene cannot use (SJKR adhesion in a wet scene) is refused.
+    for (const auto& part : parts)
+        if (part.allowed && !part.allowed(s))
+            for (const auto& p : part.parameters)
+                if (p.get(s) != p.default_value) {
+                    const std::string key(p.key);
+                    throw InputError(r.where(key, key), format_number(p.get(s)), std::string(part.allowed_text));
+                }
     // Ai et al.'s dashpot belongs to their model C (epsd); LIGGGHTS' epsd2 and cdt have none. Its
     // default 0.3 is Ai et al.'s own value: without the dashpot a sphere rocks on the rolling spring
     // with no loss, and a pile never comes to rest (docs/rest-and-damping.md).

@@ -127,6 +127,10 @@ case $class in
     scene_commands 'scene.toml:2: contact.rolling_damping = 1.5: accepted \[0, 1\]' "$work/scene.toml"
     scene '[contact]' 'rolling_model = "epsd2"' 'rolling_damping = 0.3'
     scene_commands 'scene.toml:3: contact.rolling_damping = 0.3: accepted 0 unless rolling_model = "epsd"' "$work/scene.toml"
+    scene '[contact]' 'cohesion_energy_density_j_per_m3 = -5'
+    scene_commands 'scene.toml:2: contact.cohesion_energy_density_j_per_m3 = -5: accepted a finite number >= 0 J/m\^3' "$work/scene.toml"
+    scene '[contact]' 'cohesion_energy_density_j_per_m3 = 2e4'
+    scene_commands 'scene.toml:2: contact.cohesion_energy_density_j_per_m3 = 20000: accepted 0 in a wet scene' "$work/scene.toml"
     config '[particle]' 'radii_mm = [1.0, -2.0]' 'masses_g = [0.01, 0.07]'
     config_commands 'config.toml:2: particle.radii_mm\[1\] = -2: accepted a finite number > 0' "$work/config.toml"
     refuse '--sf = 0: accepted a finite number > 0' -- "$demscale" slump --scene "$small" --sf 0

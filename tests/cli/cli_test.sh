@@ -296,7 +296,17 @@ case $case_name in
     # Without rolling resistance the deck asks for no rolling law and sets no rolling coefficient.
     { printf '[contact]\nrolling_resistance = false\n'; cat "$src/data/scenes/small_wet.toml"; } >"$work/free.toml"
     expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/free.toml" --out "$work/free"
-    ! grep -q 'rolling_friction\|Rolling' "$work/free/in.slump" || fail "rolling law in a free-rolling deck" ;;
+    ! grep -q 'rolling_friction\|Rolling' "$work/free/in.slump" || fail "rolling law in a free-rolling deck"
+    # A dry adhesive scene: LIGGGHTS' SJKR with the scene's k_c, its normal force kept out of the
+    # Coulomb limit as in demscale (tangential_reduce on), and no wet-scene note.
+    { printf '[contact]\ncohesion_energy_density_j_per_m3 = 2e4\n[liquid]\nwet = false\n'; grep -v '^\[liquid\]\|^wet' "$src/data/scenes/small_wet.toml"; } >"$work/sticky.toml"
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/sticky.toml" --out "$work/sticky"
+    for line in '^pair_style gran model hertz tangential history cohesion sjkr rolling_friction epsd3 tangential_reduce on$' \
+        'property/global cohesionEnergyDensity peratomtypepair 1 20000$'; do
+      grep -Eq -- "$line" "$work/sticky/in.slump" || { cat "$work/sticky/in.slump" >&2; fail "adhesive deck lacks /$line/"; }
+    done
+    ! grep -q 'Mikami\|DRY' "$work/sticky/in.slump" || fail "wet-scene note in a dry deck"
+    grep -q '^fix walls [a-z]* wall/gran model hertz tangential history cohesion sjkr' "$work/sticky/in.slump" || fail "walls without SJKR" ;;
   slump_sigint_then_resume)
     # The small scene with a short settle (the test runs it twice). The interrupt comes once the
     # log says the lift has begun, with the lift and 0.5 s of spreading still ahead (over 1 s of

@@ -46,7 +46,7 @@ TEST_CASE("Every law parameter: default inside its range and equal to the settin
             p.set(s, x);
             CHECK(p.get(s) == Approx(x).epsilon(1e-14));
         }
-    CHECK(keys.size() == 12);
+    CHECK(keys.size() == 13);
 }
 
 TEST_CASE("Law parameters carry the similarity catalogue's dimensions", "[dem][parameters][similarity]") {
