@@ -7,6 +7,7 @@
 #include "bridge/bridge_cost.hpp"
 #include "bridge/bridge_model.hpp"
 #include "bridge/bridge_table.hpp"
+#include "bridge/mikami.hpp"
 #include "bridge/young_laplace.hpp"
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
@@ -22,6 +23,8 @@ namespace {
 
 struct Options {
     double vhat = 0.05544, theta_deg = 0, hhat = 0;
+    std::string geometry = "sphere-sphere";
+    std::optional<double> theta_wall_deg;  // the wall's contact angle (default: --theta)
     std::string model = "exact";
     std::string format = "text";
     std::string table = default_bridge_table;
@@ -32,28 +35,58 @@ struct Options {
     double seconds = 0.2;
 };
 
+// The exact solution's row: force, rupture, whether a bridge exists, and its shape; an
+// explicit refusal where the solver has no concave bridge.
+void exact_row(const bridge::YoungLaplaceBridge& family, const Options& o, io::Table& t, std::vector<io::Cell>& row, bool wall) {
+    const auto r = family.solve(std::max(o.hhat, 0.0));
+    if (r.status == bridge::YoungLaplaceStatus::outside_scope)
+        throw InputError("--vhat, --theta", format_number(o.vhat) + ", " + format_number(o.theta_deg),
+                         "a concave (pendular) bridge, the exact solver's scope (" + r.message + ")");
+    if (r.status == bridge::YoungLaplaceStatus::not_converged) throw std::runtime_error("exact bridge: " + r.message);
+    t.columns.insert(t.columns.end(), {"neck_radius_over_r", "filling_angle_deg", "curvature_kappa", "volume_check"});
+    if (wall) t.columns.push_back("wall_footprint_over_r");
+    row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0});
+    if (r.ok()) {
+        row.insert(row.end(), {r.shape.neck_radius, r.shape.filling_angle * 180 / M_PI, r.shape.curvature, r.shape.volume});
+        if (wall) row.push_back(r.shape.plate_radius);
+    } else {
+        row.insert(row.end(), wall ? 5 : 4, io::Cell(std::string("-")));  // no bridge: no shape
+        t.notes.push_back(r.message + ": no bridge, force 0");
+    }
+}
+
 int run_bridge(const Options& o) {
     require_positive(o.vhat, "--vhat");
     require_finite(o.hhat, "--hhat");
     const ContactAngle theta{Degrees{o.theta_deg}};
     const auto format = io::parse_format(o.format, "--format");
+    const bool wall = o.geometry == "sphere-wall";
+    if (!wall && o.geometry != "sphere-sphere") throw InputError("--geometry", o.geometry, "sphere-sphere or sphere-wall");
+    if (o.theta_wall_deg && !wall) throw InputError("--theta-wall", format_number(*o.theta_wall_deg), "only with --geometry sphere-wall");
+    const ContactAngle theta_wall = o.theta_wall_deg ? ContactAngle{Degrees{*o.theta_wall_deg}} : theta;
     io::Table t;
-    t.title = "Liquid bridge between equal spheres";
-    t.metadata = {{"normalisation", "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = full gap / R; vhat = V / R^3"}};
+    t.title = wall ? "Liquid bridge between a sphere and a flat wall" : "Liquid bridge between equal spheres";
+    t.metadata = {{"normalisation", wall ? "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = gap to the wall / R; vhat = V / R^3"
+                                         : "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = full gap / R; vhat = V / R^3"}};
+    if (wall) t.metadata.push_back({"wall contact angle", format_number(o.theta_wall_deg.value_or(o.theta_deg)) + " deg"});
     t.columns = {"model", "vhat", "theta_deg", "hhat", "f_over_2pi_r_gamma", "hhat_rupture", "bridge_exists"};
     std::vector<io::Cell> row = {o.model, o.vhat, o.theta_deg, o.hhat};
     if (o.model == "exact") {
-        const auto r = bridge::solve_young_laplace(o.vhat, theta, std::max(o.hhat, 0.0));
-        if (r.status == bridge::YoungLaplaceStatus::outside_scope)
-            throw InputError("--vhat, --theta", format_number(o.vhat) + ", " + format_number(o.theta_deg),
-                             "a concave (pendular) bridge, the exact solver's scope (" + r.message + ")");
-        if (r.status == bridge::YoungLaplaceStatus::not_converged) throw std::runtime_error("exact bridge: " + r.message);
-        t.columns.insert(t.columns.end(), {"neck_radius_over_r", "filling_angle_deg", "curvature_kappa", "volume_check"});
-        row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0});
-        if (r.ok()) row.insert(row.end(), {r.shape.neck_radius, r.shape.filling_angle * 180 / M_PI, r.shape.curvature, r.shape.volume});
-        else row.insert(row.end(), 4, io::Cell(std::string("-")));  // no bridge: no shape
-        if (!r.ok()) t.notes.push_back(r.message + ": no bridge, force 0");
+        exact_row(wall ? bridge::YoungLaplaceBridge::sphere_plane(o.vhat, theta, theta_wall) : bridge::YoungLaplaceBridge(o.vhat, theta),
+                  o, t, row, wall);
         if (o.hhat < 0) t.notes.push_back("h^ < 0 (overlap) evaluated at contact, h^ = 0");
+    } else if (wall) {
+        // Mikami's sphere–wall fit: one contact angle for sphere and wall.
+        const bool mikami = o.model == "mikami1998" || o.model == "yun-park-2017";
+        if (!mikami) throw InputError("--model", o.model, "exact, mikami1998 or yun-park-2017 with --geometry sphere-wall (the models with a sphere-wall form)");
+        if (o.theta_wall_deg && *o.theta_wall_deg != o.theta_deg)
+            throw InputError("--theta-wall", format_number(*o.theta_wall_deg), "--theta's value for Mikami's wall fit (one contact angle)");
+        const auto k = bridge::mikami_coefficients(o.vhat, theta, {bridge::parse_mikami_variant(o.model, "--model")},
+                                                   bridge::BridgeGeometry::sphere_wall);
+        const auto e = bridge::evaluate_mikami(k, o.hhat);
+        row.insert(row.end(), {bridge::f_over_2pi_r_gamma(k, e.fhat), k.hhat_rupture, e.bridge_exists ? 1.0 : 0.0});
+        if (!e.bridge_exists) t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(k.hhat_rupture) + "): no bridge, force 0");
+        t.notes.push_back("Mikami's sphere-wall fit overestimates the exact force (bridge-error, bridge_wall_error.csv)");
     } else {
         std::optional<bridge::BridgeTable> table;
         if (o.model == "table") table = io::read_bridge_table(o.table);
@@ -185,6 +218,9 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     one->add_option("--hhat", o->hhat, "full surface gap / R")->capture_default_str();
     one->add_option("--model", o->model, names)->capture_default_str();
     one->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
+    one->add_option("--geometry", o->geometry, "sphere-sphere | sphere-wall (a sphere above a flat wall: exact, mikami1998, yun-park-2017)")
+        ->capture_default_str();
+    one->add_option("--theta-wall", o->theta_wall_deg, "the wall's contact angle in degrees (default: --theta; exact only)");
     one->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
 
     auto* gen = app.add_subcommand("bridge-table", "tabulate the exact bridge for --model table (about 20 s)");

@@ -22,7 +22,9 @@ constexpr double pi = std::numbers::pi;
 // GSL reports failures through return codes here; its default handler would abort the program.
 const bool gsl_quiet = [] { gsl_set_error_handler_off(); return true; }();
 
-using State = std::array<double, 4>;  // r, z, φ, π∫r² dz
+// r, z, φ, π∫r² dz, and (sphere–plane only) the meniscus area 2π∫r ds: a fifth component would
+// change the step control of the symmetric bridge, whose results stay as they were.
+using State = std::array<double, 5>;
 
 int meridian_rhs(double, const double y[], double dyds[], void* params) {
     const double kappa = *static_cast<const double*>(params);
@@ -34,8 +36,19 @@ int meridian_rhs(double, const double y[], double dyds[], void* params) {
     dyds[3] = pi * r * r * std::cos(phi);
     return GSL_SUCCESS;
 }
+int meridian_area_rhs(double s, const double y[], double dyds[], void* params) {
+    dyds[4] = 2 * pi * y[0];
+    return meridian_rhs(s, y, dyds, params);
+}
 
-// κ from the first integral at neck and contact line (see header).
+// Where the meniscus ends below: the mid-plane of two equal spheres (a neck, by symmetry), or a
+// plate it meets at its own contact angle θ (rad) below a neck.
+struct Lower {
+    bool plate = false;
+    double theta = 0;
+};
+
+// κ from the first integral at the neck (radius r₀, φ = 0) and at the sphere's contact line.
 double curvature_for(double beta, double r0, double theta) {
     const double sb = std::sin(beta);
     return 2.0 * (sb * std::sin(beta + theta) - r0) / ((sb - r0) * (sb + r0));
@@ -64,35 +77,35 @@ std::optional<double> brent_root(const std::function<double(double)>& f, double 
 
 }  // namespace
 
-std::optional<BridgeShape> integrate_bridge(double beta, double r0, ContactAngle theta_angle,
-                                            const YoungLaplaceTolerance& tol) {
-    const double theta = theta_angle.radians();
-    const double rc = std::sin(beta);
-    if (!(beta > 0 && beta + theta < pi / 2 && r0 > 0 && r0 < rc)) return std::nullopt;
-    double kappa = curvature_for(beta, r0, theta);
-    if (!std::isfinite(kappa)) return std::nullopt;
+namespace {
 
-    gsl_odeiv2_system sys{meridian_rhs, nullptr, 4, &kappa};
-    // Adaptive steps (rk8pd) until r passes the contact radius; then pin the end point by
-    // safeguarded Newton in arc length from the last step.
-    using Step = std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)>;
+// Where one step of the meridian leaves it: still going, at the event (pin it), or no shape.
+enum class Step { on, reached, no_shape };
+
+// Integrates the meridian from the neck (r₀, z = 0, φ = 0) with adaptive steps (rk8pd) until
+// `step_end(prev, y, s)` says the event lies in the last step, then pins the event, e(y) = 0 with
+// de/ds = `slope(y)`, by safeguarded Newton in arc length to |e| ≤ 1e-15·scale.
+template <class StepEnd, class Event, class Slope>
+std::optional<State> integrate_to(gsl_odeiv2_system& sys, double r0, double h, const YoungLaplaceTolerance& tol, StepEnd step_end,
+                                  Event event, Slope slope, double scale) {
+    using StepPtr = std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)>;
     using Control = std::unique_ptr<gsl_odeiv2_control, decltype(&gsl_odeiv2_control_free)>;
     using Evolve = std::unique_ptr<gsl_odeiv2_evolve, decltype(&gsl_odeiv2_evolve_free)>;
-    Step step(gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 4), gsl_odeiv2_step_free);
+    StepPtr step(gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, sys.dimension), gsl_odeiv2_step_free);
     Control control(gsl_odeiv2_control_y_new(tol.ode, tol.ode), gsl_odeiv2_control_free);
-    Evolve evolve(gsl_odeiv2_evolve_alloc(4), gsl_odeiv2_evolve_free);
+    Evolve evolve(gsl_odeiv2_evolve_alloc(sys.dimension), gsl_odeiv2_evolve_free);
     const double s_max = 20.0;  // a pendular meniscus between unit spheres is far shorter
-    State prev{r0, 0, 0, 0}, y = prev;
-    double s_prev = 0, s = 0, h = 1e-3 * (rc - r0);
+    State prev{r0, 0, 0, 0, 0}, y = prev;
+    double s_prev = 0, s = 0;
     for (int n = 0;; ++n) {
         prev = y;
         s_prev = s;
         if (n > 100000 || gsl_odeiv2_evolve_apply(evolve.get(), control.get(), step.get(), &sys, &s, s_max, &h, y.data()) !=
                               GSL_SUCCESS)
             return std::nullopt;
-        if (y[0] >= rc) break;
-        // The profile turned back toward the axis (a bulge) or curled over: no concave bridge here.
-        if (s >= s_max || !(y[0] > 0) || y[2] <= 0 || y[2] >= pi) return std::nullopt;
+        const Step at = step_end(prev, y, s >= s_max);
+        if (at == Step::reached) break;
+        if (at == Step::no_shape) return std::nullopt;
     }
     Driver drv{gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 0.1 * (s - s_prev), tol.ode, tol.ode)};
     double lo = 0, hi = s - s_prev, delta = 0.5 * (lo + hi);
@@ -102,28 +115,77 @@ std::optional<BridgeShape> integrate_bridge(double beta, double r0, ContactAngle
         double t = s_prev;
         gsl_odeiv2_driver_reset(drv.d);
         if (delta > 0 && gsl_odeiv2_driver_apply(drv.d, &t, s_prev + delta, trial.data()) != GSL_SUCCESS) return std::nullopt;
-        const double residual = trial[0] - rc;
+        const double residual = event(trial);
         end = trial;
-        if (std::abs(residual) <= 1e-15 * rc) break;
+        if (std::abs(residual) <= 1e-15 * scale) break;
         (residual > 0 ? hi : lo) = delta;
-        const double slope = std::sin(trial[2]);
-        double next = slope > 1e-8 ? delta - residual / slope : 0.5 * (lo + hi);
+        const double rate = slope(trial);
+        double next = rate > 1e-8 ? delta - residual / rate : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         if (std::abs(next - delta) <= 1e-16 * (s_prev + delta)) break;
         delta = next;
     }
+    return end;
+}
+
+// One side of the bridge for neck radius r₀ and filling angle β: from the neck up to the sphere's
+// contact line (r = sin β); on a plate also from the neck down to the plate, the mirror image of
+// the meridian above the neck up to where φ = π/2 − θ_plate (the ODE is symmetric about the neck).
+std::optional<BridgeShape> integrate_meniscus(double beta, double r0, double theta, const Lower& lower, const YoungLaplaceTolerance& tol) {
+    const double rc = std::sin(beta);
+    if (!(beta > 0 && beta + theta < pi / 2 && r0 > 0 && r0 < rc)) return std::nullopt;
+    double kappa = curvature_for(beta, r0, theta);
+    if (!std::isfinite(kappa)) return std::nullopt;
+    // The meniscus area (a fifth component) only on a plate: it would change the step control of
+    // the symmetric bridge, whose results stay as they were.
+    gsl_odeiv2_system sys{lower.plate ? meridian_area_rhs : meridian_rhs, nullptr, lower.plate ? 5u : 4u, &kappa};
+    // The profile turned back toward the axis (a bulge) or curled over: no concave bridge here.
+    auto bulges = [](const State& y, bool too_long) { return too_long || !(y[0] > 0) || y[2] <= 0 || y[2] >= pi; };
+    const auto end = integrate_to(
+        sys, r0, 1e-3 * (rc - r0), tol,
+        [&](const State&, const State& y, bool too_long) { return y[0] >= rc ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on; },
+        [&](const State& y) { return y[0] - rc; }, [](const State& y) { return std::sin(y[2]); }, rc);
+    if (!end) return std::nullopt;
 
     BridgeShape b;
     b.neck_radius = r0;
     b.filling_angle = beta;
     b.curvature = kappa;
-    b.half_gap = end[1] - 1.0 + std::cos(beta);                        // z_c = 1 + d − cos β
+    b.half_gap = (*end)[1] - 1.0 + std::cos(beta);                     // z_c = 1 + d − cos β
     const double cap = 1.0 - std::cos(beta);
-    b.volume = 2.0 * (end[3] - pi * cap * cap * (3.0 - cap) / 3.0);   // minus the sphere caps inside
+    b.volume = (*end)[3] - pi * cap * cap * (3.0 - cap) / 3.0;         // minus the sphere cap inside
     b.fhat_neck = r0 - 0.5 * kappa * r0 * r0;
-    b.fhat_contact = end[0] * std::cos(end[2]) - 0.5 * kappa * end[0] * end[0];
-    b.contact_angle_error = std::abs(end[2] - (pi / 2 - beta - theta));
+    b.fhat_contact = (*end)[0] * std::cos((*end)[2]) - 0.5 * kappa * (*end)[0] * (*end)[0];
+    b.contact_angle_error = std::abs((*end)[2] - (pi / 2 - beta - theta));
+    if (!lower.plate) return b;
+
+    const double phi_plate = pi / 2 - lower.theta;  // the mirror image of θ_plate − π/2 below the neck
+    const auto foot = integrate_to(
+        sys, r0, 1e-3 * (rc - r0), tol,
+        [&](const State&, const State& y, bool too_long) {
+            return y[2] >= phi_plate ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on;
+        },
+        [&](const State& y) { return y[2] - phi_plate; }, [&](const State& y) { return std::cos(y[2]) / y[0] - kappa; }, 1.0);
+    if (!foot || phi_plate <= 0) return std::nullopt;
+    b.plate_radius = (*foot)[0];
+    b.half_gap += (*foot)[1];            // the plate lies that far below the neck
+    b.volume += (*foot)[3];
+    b.meniscus_area = (*end)[4] + (*foot)[4];
+    b.fhat_plate = (*foot)[0] * std::cos((*foot)[2]) - 0.5 * kappa * (*foot)[0] * (*foot)[0];
     return b;
+}
+
+// Both sides of a symmetric bridge: the volume of two halves.
+std::optional<BridgeShape> integrate(double beta, double r0, double theta, const Lower& lower, const YoungLaplaceTolerance& tol) {
+    auto b = integrate_meniscus(beta, r0, theta, lower, tol);
+    if (b && !lower.plate) b->volume *= 2.0;
+    return b;
+}
+
+}  // namespace
+
+std::optional<BridgeShape> integrate_bridge(double beta, double r0, ContactAngle theta, const YoungLaplaceTolerance& tol) {
+    return integrate(beta, r0, theta.radians(), Lower{}, tol);
 }
 
 std::pair<double, double> bridge_by_quadrature(double beta, double r0, ContactAngle theta_angle) {
@@ -153,16 +215,58 @@ std::pair<double, double> bridge_by_quadrature(double beta, double r0, ContactAn
 
 namespace {
 
+// On a plate the filling angles with a shape for one neck form up to two intervals: narrow
+// contact lines just above the neck (the stable bridges), and wide ones; between them the meridian
+// turns before it meets the plate at its angle. The volume grows with β in each. A geometric scan
+// up from the neck finds the first interval whose volumes reach V̂ (bisection pushes an interval's
+// end when V̂ lies beyond the scan's last point in it); Brent's method solves there.
+template <class VolumeAt>
+std::optional<BridgeShape> plate_shape_with_volume(double r0, double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol,
+                                                   double beta_min, double beta_limit, VolumeAt& volume_at) {
+    constexpr int n = 48;
+    const double first = beta_min * (1 + 1e-6), last = beta_limit - 1e-6, ratio = std::pow(last / first, 1.0 / (n - 1));
+    std::optional<std::pair<double, double>> bracket;  // (lo, hi) in β, V(lo) < V̂ ≤ V(hi)
+    std::optional<double> below;                        // the last β with a shape holding less than V̂
+    double without = beta_min;                          // the last β without a shape
+    // Bisects between a β with a shape and one without (the interval's end), for V̂ on the far side.
+    auto push = [&](double with, double none, bool want_less) {
+        for (int j = 0; j < 50 && !bracket && std::abs(none - with) > 1e-13; ++j) {
+            const double mid = 0.5 * (with + none);
+            const auto vm = volume_at(mid);
+            if (!vm) none = mid;
+            else if ((*vm < vhat) == want_less) bracket = want_less ? std::pair{mid, with} : std::pair{with, mid};
+            else with = mid;
+        }
+    };
+    for (int i = 0; i < n && !bracket; ++i) {
+        const double b = first * std::pow(ratio, i);
+        const auto v = volume_at(b);
+        if (v && *v >= vhat && below) bracket = {*below, b};
+        else if (v && *v >= vhat) push(b, without, true);  // an interval starts above V̂: below it near its start?
+        else if (v) below = b;
+        else {
+            if (below) push(*below, b, false);  // an interval ended below V̂: does it reach V̂ before its end?
+            below.reset(), without = b;
+        }
+    }
+    if (!bracket) return std::nullopt;
+    auto beta = brent_root([&](double b) { auto v = volume_at(b); return v ? *v - vhat : NAN; }, bracket->first, bracket->second,
+                           tol.root);
+    if (!beta) return std::nullopt;
+    return integrate(*beta, r0, theta, lower, tol);
+}
+
 // The constant-volume family: for a neck radius r₀, the filling angle that holds volume V̂.
-std::optional<BridgeShape> shape_with_volume(double r0, double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol) {
+std::optional<BridgeShape> shape_with_volume(double r0, double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol) {
     auto volume_at = [&](double beta) -> std::optional<double> {
-        auto b = integrate_bridge(beta, r0, theta, tol);
+        auto b = integrate(beta, r0, theta, lower, tol);
         return b ? std::optional(b->volume) : std::nullopt;
     };
     // Widest contact: β → π/2 − θ makes the meniscus meet the sphere vertically (φ_c → 0), where r
     // reaches sin β only tangentially; back off from that limit until the end point is well defined.
-    const double beta_limit = pi / 2 - theta.radians();
-    const double beta_min = std::asin(r0);
+    const double beta_limit = pi / 2 - theta;
+    const double beta_min = std::asin(r0);  // the neck is narrower than the contact line
+    if (lower.plate) return plate_shape_with_volume(r0, vhat, theta, lower, tol, beta_min, beta_limit, volume_at);
     double beta_hi = beta_limit;
     std::optional<double> v_hi;
     for (double gap = 1e-6; gap < 0.5 && !v_hi; gap *= 4) {
@@ -182,40 +286,69 @@ std::optional<BridgeShape> shape_with_volume(double r0, double vhat, ContactAngl
     }
     auto beta = brent_root([&](double b) { auto v = volume_at(b); return v ? *v - vhat : NAN; }, lo, hi, tol.root);
     if (!beta) return std::nullopt;
-    return integrate_bridge(*beta, r0, theta, tol);
+    return integrate(*beta, r0, theta, lower, tol);
 }
 
-// Largest neck radius that can still hold V̂ (upper end of the family), by bisection.
-std::optional<double> widest_neck(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol) {
-    double lo = 0, hi = std::sin(pi / 2 - theta.radians());
+// Upper end of the family, by bisection: the widest neck that can still hold V̂ (on a plate, with
+// the sphere still clear of it, gap ≥ −0.01 R, so that contact lies inside).
+std::optional<double> widest_neck(double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol) {
+    auto holds = [&](double r0) {
+        const auto b = shape_with_volume(r0, vhat, theta, lower, tol);
+        return b && (!lower.plate || b->half_gap >= -0.01);
+    };
+    double lo = 0, hi = std::sin(pi / 2 - theta);
     double probe = std::min(std::pow(2.0 * vhat / pi, 0.25), 0.5 * hi);  // toroidal contact estimate of β
-    while (probe > 1e-12 && !shape_with_volume(probe, vhat, theta, tol)) probe *= 0.5;
+    while (probe > 1e-12 && !holds(probe)) probe *= 0.5;
     if (probe <= 1e-12) return std::nullopt;
     lo = probe;
     for (int i = 0; i < 60 && hi - lo > 1e-10 * hi; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (shape_with_volume(mid, vhat, theta, tol) ? lo : hi) = mid;
+        (holds(mid) ? lo : hi) = mid;
     }
     return lo;
 }
 
-}  // namespace
-
-namespace {
-
-// The fold of d(r₀) on r₀ ∈ (0, top]: coarse log scan, then Brent's minimiser of −d.
-std::optional<Rupture> fold_of_family(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol, double top) {
-    auto half_gap = [&](double r0) { auto b = shape_with_volume(r0, vhat, theta, tol); return b ? b->half_gap : -INFINITY; };
+// The fold of the gap along the family, r₀ ∈ (0, top]: coarse log scan, then Brent's minimiser of
+// −gap. sides: 2 between spheres (the full gap is twice the half gap), 1 to a plate.
+std::optional<Rupture> fold_of_family(double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol, double top) {
+    auto half_gap = [&](double r0) { auto b = shape_with_volume(r0, vhat, theta, lower, tol); return b ? b->half_gap : -INFINITY; };
+    const double sides = lower.plate ? 1.0 : 2.0;
     constexpr int n = 24;
     std::array<double, n> r{}, d{};
     int best = -1;
-    for (int i = 0; i < n; ++i) {
-        r[i] = top * std::pow(1e-4, 1.0 - double(i) / (n - 1));
-        d[i] = half_gap(r[i]);
-        if (std::isfinite(d[i]) && (best < 0 || d[i] > d[best])) best = i;
+    for (int i = 0; i < n; ++i) r[i] = top * std::pow(1e-4, 1.0 - double(i) / (n - 1));
+    if (!lower.plate) {
+        for (int i = 0; i < n; ++i) {
+            d[i] = half_gap(r[i]);
+            if (std::isfinite(d[i]) && (best < 0 || d[i] > d[best])) best = i;
+        }
+    } else {
+        // On a plate the family can break off: near rupture at θ > 0 the meridian turns (an
+        // inflection) before it meets the plate at its angle, and for a range of necks no shape
+        // holds V̂. The stable bridge stretches along the piece that reaches contact, from the
+        // widest neck down; thinner necks beyond the break belong to another piece. When the gap
+        // still grows where the piece ends, the bridge ruptures there: its end, by bisection.
+        d.fill(-INFINITY);
+        int end = -1;  // the piece's thinnest scan point
+        for (int i = n - 1; i >= 0 && (end < 0 || end == i + 1); --i) {
+            d[i] = half_gap(r[i]);
+            if (!std::isfinite(d[i])) continue;
+            end = i;
+            if (best < 0 || d[i] > d[best]) best = i;
+        }
+        if (best >= 0 && best == end && end > 0) {
+            double with = r[end], without = r[end - 1], gap = d[end];
+            for (int i = 0; i < 50 && with - without > 1e-12 * with; ++i) {
+                const double mid = 0.5 * (with + without);
+                const double g = half_gap(mid);
+                if (std::isfinite(g)) with = mid, gap = g;
+                else without = mid;
+            }
+            return Rupture{gap, with};
+        }
     }
     if (best < 0) return std::nullopt;
-    if (best == 0 || best == n - 1) return Rupture{2.0 * d[best], r[best]};  // fold at the scan's edge
+    if (best == 0 || best == n - 1) return Rupture{sides * d[best], r[best]};  // fold at the scan's edge
     gsl_function f;
     f.function = [](double x, void* p) { return -(*static_cast<decltype(half_gap)*>(p))(x); };
     f.params = &half_gap;
@@ -223,32 +356,42 @@ std::optional<Rupture> fold_of_family(double vhat, ContactAngle theta, const You
                                                                               gsl_min_fminimizer_free);
     if (gsl_min_fminimizer_set_with_values(m.get(), &f, r[best], -d[best], r[best - 1], -d[best - 1], r[best + 1],
                                            -d[best + 1]) != GSL_SUCCESS)
-        return Rupture{2.0 * d[best], r[best]};
+        return Rupture{sides * d[best], r[best]};
     for (int i = 0; i < 100; ++i) {
         if (gsl_min_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
         if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(m.get()), gsl_min_fminimizer_x_upper(m.get()), 0.0, 1e-9) ==
             GSL_SUCCESS)
             break;
     }
-    return Rupture{-2.0 * gsl_min_fminimizer_f_minimum(m.get()), gsl_min_fminimizer_x_minimum(m.get())};
+    return Rupture{-sides * gsl_min_fminimizer_f_minimum(m.get()), gsl_min_fminimizer_x_minimum(m.get())};
 }
+
+Lower lower_of(const std::optional<ContactAngle>& plate) { return plate ? Lower{true, plate->radians()} : Lower{}; }
 
 }  // namespace
 
 std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol) {
     require_positive(vhat, "vhat");
-    const auto top = widest_neck(vhat, theta, tol);
-    return top ? fold_of_family(vhat, theta, tol, *top) : std::nullopt;
+    const auto top = widest_neck(vhat, theta.radians(), Lower{}, tol);
+    return top ? fold_of_family(vhat, theta.radians(), Lower{}, tol, *top) : std::nullopt;
 }
 
-YoungLaplaceBridge::YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol)
-    : vhat_(vhat), theta_(theta), tol_(tol) {
+YoungLaplaceBridge::YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol,
+                                       std::optional<ContactAngle> theta_plate)
+    : vhat_(vhat), theta_(theta), tol_(tol), plate_(theta_plate) {
     require_positive(vhat, "vhat");
-    widest_neck_ = widest_neck(vhat, theta, tol);
-    if (widest_neck_) rupture_ = fold_of_family(vhat, theta, tol, *widest_neck_);
+    const Lower lower = lower_of(plate_);
+    widest_neck_ = widest_neck(vhat, theta.radians(), lower, tol);
+    if (widest_neck_) rupture_ = fold_of_family(vhat, theta.radians(), lower, tol, *widest_neck_);
     if (!family_ok())
-        family_message_ = "no concave bridge of V^ = " + format_number(vhat) + " at theta = " +
-                          format_number(theta.degrees()) + " deg (constant-volume family not traced)";
+        family_message_ = "no concave bridge of V^ = " + format_number(vhat) + " at theta = " + format_number(theta.degrees()) +
+                          (plate_ ? " deg (sphere), " + format_number(plate_->degrees()) + " deg (plate)" : " deg") +
+                          " (constant-volume family not traced)";
+}
+
+YoungLaplaceBridge YoungLaplaceBridge::sphere_plane(double vhat, ContactAngle theta, ContactAngle theta_plate,
+                                                   const YoungLaplaceTolerance& tol) {
+    return YoungLaplaceBridge(vhat, theta, tol, theta_plate);
 }
 
 YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
@@ -270,9 +413,10 @@ YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
         res.message = "h^ = " + format_number(hhat) + " is beyond rupture (h^_c = " + format_number(rupture_->hhat) + ")";
         return res;
     }
+    const Lower lower = lower_of(plate_);
     auto gap_error = [&](double r0) {
-        auto b = shape_with_volume(r0, vhat_, theta_, tol_);
-        return b ? b->half_gap - 0.5 * hhat : NAN;
+        auto b = shape_with_volume(r0, vhat_, theta_.radians(), lower, tol_);
+        return b ? b->half_gap - (lower.plate ? hhat : 0.5 * hhat) : NAN;
     };
     // The stable branch: wide necks, from the fold up to the widest neck; the gap falls along it.
     const double lo = rupture_->neck_radius, hi = *widest_neck_;
@@ -284,7 +428,7 @@ YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
     }
     std::optional<double> r0 = lo;
     if (!(gap_error(lo) < 0)) r0 = brent_root(gap_error, lo, hi, tol_.root);  // else: at the fold itself
-    const auto shape = r0 ? shape_with_volume(*r0, vhat_, theta_, tol_) : std::nullopt;
+    const auto shape = r0 ? shape_with_volume(*r0, vhat_, theta_.radians(), lower, tol_) : std::nullopt;
     if (!shape) {
         res.message = "root finding for the neck radius did not converge";
         return res;

@@ -27,15 +27,24 @@ struct YoungLaplaceTolerance {
 };
 
 // One bridge shape in units of R.
+// Sphere–plane (YoungLaplaceBridge::sphere_plane): the sphere above a flat plate at gap ĥ. The
+// meridian below the neck is the mirror image of the one above it (the ODE is symmetric about the
+// neck), so one integration from the neck up to φ = π/2 − θ_plate gives the plate's footprint and
+// how far below the neck the plate lies; with θ_plate = 90° the plate is the mid-plane of two
+// equal spheres (V̂/2, ĥ/2).
 struct BridgeShape {
     double neck_radius = 0;     // r₀
     double filling_angle = 0;   // β, rad
     double curvature = 0;       // κ = ΔpR/γ (negative: suction)
-    double half_gap = 0;        // d = ĥ/2
+    double half_gap = 0;        // d = ĥ/2; sphere–plane: the gap ĥ itself
     double volume = 0;          // V̂ = V/R³
     double fhat_neck = 0;       // F/(2πRγ) from the neck ("gorge" method)
-    double fhat_contact = 0;    // F/(2πRγ) at the contact line, with the integrated angle
+    double fhat_contact = 0;    // F/(2πRγ) at the sphere's contact line, with the integrated angle
     double contact_angle_error = 0;  // |φ_end − (π/2 − β − θ)|, rad: a check of the integration
+    // Sphere–plane only (0 otherwise):
+    double plate_radius = 0;    // the footprint on the plate, r_p
+    double fhat_plate = 0;      // F/(2πRγ) at the plate's contact line, with the integrated angle
+    double meniscus_area = 0;   // liquid–gas area / R²
 };
 
 enum class YoungLaplaceStatus { ok, above_rupture, not_converged, outside_scope };
@@ -67,7 +76,13 @@ std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, co
 // widest neck), then each gap costs one root search. Use it for curves and grids.
 class YoungLaplaceBridge {
 public:
-    YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
+    // Two equal spheres; with theta_plate, a sphere above a plate (as sphere_plane()).
+    YoungLaplaceBridge(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {},
+                       std::optional<ContactAngle> theta_plate = std::nullopt);
+    // A sphere above a flat plate: V̂ the whole bridge, ĥ the gap to the plate, θ on the sphere,
+    // theta_plate on the plate. The force is F/(2πRγ) on the sphere, as between spheres.
+    static YoungLaplaceBridge sphere_plane(double vhat, ContactAngle theta, ContactAngle theta_plate,
+                                           const YoungLaplaceTolerance& tol = {});
 
     // Valid when family_ok(); otherwise every solve() reports outside_scope with family_message().
     bool family_ok() const { return rupture_.has_value() && widest_neck_.has_value(); }
@@ -82,6 +97,7 @@ private:
     double vhat_;
     ContactAngle theta_;
     YoungLaplaceTolerance tol_;
+    std::optional<ContactAngle> plate_;  // the plate's contact angle; nullopt: two equal spheres
     std::optional<Rupture> rupture_;
     std::optional<double> widest_neck_;
     std::string family_message_;

@@ -9,6 +9,7 @@
 #include "bridge/bridge_cost.hpp"
 #include "bridge/bridge_model.hpp"
 #include "bridge/bridge_table.hpp"
+#include "bridge/mikami.hpp"
 #include "bridge/young_laplace.hpp"
 #include "core/input_error.hpp"
 #include "core/version.hpp"
@@ -47,8 +48,9 @@ std::vector<double> log_space(double lo, double hi, int n) {
 }  // namespace
 
 BridgeErrorGrid default_bridge_error_grid(bool quick) {
-    if (quick) return {log_space(1e-5, 0.3, 3), {0, 40}, {0, 0.5, 0.9}};
-    return {log_space(1e-5, 0.3, 8), {0, 20, 40, 60}, {0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.99}};
+    if (quick) return {log_space(1e-5, 0.3, 3), {0, 40}, {0, 0.5, 0.9}, log_space(1e-5, 0.1, 3), {0, 40}};
+    return {log_space(1e-5, 0.3, 8), {0, 20, 40, 60}, {0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.99},
+            log_space(1e-5, 0.1, 9), {0, 10, 20, 30, 40}};
 }
 
 BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::string& table_path, int map_vhat_points,
@@ -125,6 +127,50 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
         sum.rows.push_back({m, static_cast<double>(a.size()), a.empty() ? 0.0 : *std::max_element(a.begin(), a.end()),
                             median(a), over(0.05), over(0.20), ra.empty() ? 0.0 : *std::max_element(ra.begin(), ra.end()),
                             cost.ns_per_evaluation});
+    }
+    // Mikami's sphere–wall fit, the law of the scenes' wet walls, against the exact sphere–plane
+    // bridge with both surfaces at θ (docs/bridge-models.md).
+    auto& wall = study.wall;
+    wall.title = "Mikami's sphere-wall fit against the exact sphere-plane bridge (sphere and wall at theta)";
+    wall.metadata = {{"fhat", "F/(2 pi R gamma); hhat = gap to the wall / R; x = hhat / hhat_rupture of the exact solution"}};
+    wall.columns = {"vhat", "theta_deg", "x", "hhat", "fhat_exact", "fhat_mikami_wall", "rel_error", "rupture_ratio"};
+    std::vector<double> wall_errors, wall_rupture_errors;
+    std::size_t wall_outside = 0;
+    for (double vhat : grid.wall_vhat)
+        for (double deg : grid.wall_theta_deg) {
+            const ContactAngle theta{Degrees{deg}};
+            const auto exact = bridge::YoungLaplaceBridge::sphere_plane(vhat, theta, theta);
+            if (!exact.family_ok()) {
+                wall_outside += grid.gap_fraction.size();
+                continue;
+            }
+            const auto k = bridge::mikami_coefficients(vhat, theta, {}, bridge::BridgeGeometry::sphere_wall);
+            const double rupture_ratio = k.hhat_rupture / exact.hhat_rupture();
+            wall_rupture_errors.push_back(rupture_ratio - 1);
+            for (double x : grid.gap_fraction) {
+                const double hhat = x * exact.hhat_rupture();
+                const auto e = exact.solve(hhat);
+                if (!e.ok()) {
+                    ++wall_outside;
+                    continue;
+                }
+                const double f = bridge::f_over_2pi_r_gamma(k, bridge::mikami_fhat(k, hhat));
+                const auto r = relative_error(f, e.shape.fhat_neck);
+                if (r) wall_errors.push_back(std::abs(*r));
+                wall.rows.push_back({vhat, deg, x, hhat, e.shape.fhat_neck, f, r ? io::Cell(*r) : io::Cell(io::not_available), rupture_ratio});
+            }
+        }
+    if (wall_outside > 0) wall.notes.push_back(std::to_string(wall_outside) + " grid points without a concave exact bridge left out");
+    {
+        const auto over = [&](double t) {
+            return static_cast<double>(std::count_if(wall_errors.begin(), wall_errors.end(), [t](double x) { return x > t; })) /
+                   std::max<double>(static_cast<double>(wall_errors.size()), 1.0);
+        };
+        double rupture = 0;
+        for (double e : wall_rupture_errors) rupture = std::max(rupture, std::abs(e));
+        sum.rows.push_back({std::string("mikami1998 sphere-wall"), static_cast<double>(wall_errors.size()),
+                            wall_errors.empty() ? 0.0 : *std::max_element(wall_errors.begin(), wall_errors.end()), median(wall_errors),
+                            over(0.05), over(0.20), rupture, io::not_available});
     }
     {
         const auto exact_model = bridge::make_bridge_model("exact");

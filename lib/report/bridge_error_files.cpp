@@ -43,9 +43,9 @@ set format x '10^{%T}'
 set grid lc rgb '#dddddd'
 set key top right box opaque
 set offsets graph 0.1, graph 0.3, graph 0.2, graph 0.2
-plot 'bridge_error_summary.csv' using (strcol("model") eq "exact" ? NaN : column("ns_per_evaluation")):(column("max_abs_rel_error")) with points pt 7 ps 1.6 lc rgb '#b2182b' title 'max |error|', \
-     '' using (strcol("model") eq "exact" ? NaN : column("ns_per_evaluation")):(column("median_abs_rel_error")) with points pt 5 ps 1.4 lc rgb '#2166ac' title 'median |error|', \
-     '' using (strcol("model") eq "exact" ? NaN : column("ns_per_evaluation")):(column("max_abs_rel_error")):(strcol("model")) with labels offset 1.2,0.8 left notitle
+plot 'bridge_error_summary.csv' using ((strcol("model") eq "exact" || strcol("ns_per_evaluation") eq "n/a") ? NaN : column("ns_per_evaluation")):(column("max_abs_rel_error")) with points pt 7 ps 1.6 lc rgb '#b2182b' title 'max |error|', \
+     '' using ((strcol("model") eq "exact" || strcol("ns_per_evaluation") eq "n/a") ? NaN : column("ns_per_evaluation")):(column("median_abs_rel_error")) with points pt 5 ps 1.4 lc rgb '#2166ac' title 'median |error|', \
+     '' using ((strcol("model") eq "exact" || strcol("ns_per_evaluation") eq "n/a") ? NaN : column("ns_per_evaluation")):(column("max_abs_rel_error")):(strcol("model")) with labels offset 1.2,0.8 left notitle
 )";
 
 }  // namespace
@@ -59,6 +59,7 @@ std::vector<fs::path> write_bridge_error_files(const BridgeErrorStudy& study, co
     write("bridge_error.csv", io::render(study.points, io::Format::csv));
     write("bridge_error_summary.csv", io::render(study.summary, io::Format::csv));
     write("bridge_mikami_error.csv", io::render(study.mikami_map, io::Format::csv));
+    write("bridge_wall_error.csv", io::render(study.wall, io::Format::csv));
     write("bridge_mikami_error.gp", heat_map_script);
     write("bridge_speed_error.gp", speed_error_script);
     if (render_png) {

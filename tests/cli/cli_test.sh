@@ -147,20 +147,34 @@ case $case_name in
   bridge_exact_and_above_rupture)
     expect 0 '^exact,0.05544,0,0,0.8186' -- "$demscale" bridge --vhat 0.05544 --hhat 0 --model exact --format csv
     expect 0 'beyond rupture.*no bridge, force 0' -- "$demscale" bridge --vhat 0.05544 --hhat 0.5 --model mikami1998
-    grep -Eq 'mikami1998 +0.05544 +0 +0.5 +0 ' "$work/out" || fail "force above rupture must be 0" ;;
+    grep -Eq 'mikami1998 +0.05544 +0 +0.5 +0 ' "$work/out" || fail "force above rupture must be 0"
+    # A sphere above a wall: the exact bridge (with the footprint on the wall) below the bound
+    # F/(2 pi R gamma) = 2 cos theta, and Mikami's wall fit above it at Table 1's V^.
+    expect 0 '^model,vhat,theta_deg,hhat,f_over_2pi_r_gamma,hhat_rupture,bridge_exists,neck_radius_over_r,filling_angle_deg,curvature_kappa,volume_check,wall_footprint_over_r$' \
+      -- "$demscale" bridge --geometry sphere-wall --vhat 0.05544 --model exact --format csv
+    exact=$(awk -F, '$1 == "exact" {print $5}' "$work/out")
+    expect 0 '^mikami1998,0.05544' -- "$demscale" bridge --geometry sphere-wall --vhat 0.05544 --model mikami1998 --format csv
+    mikami=$(awk -F, '$1 == "mikami1998" {print $5}' "$work/out")
+    awk -v e="$exact" -v m="$mikami" 'BEGIN { exit !(e > 1 && e < 2 && m > e) }' || fail "sphere-wall forces: exact $exact, Mikami $mikami" ;;
   bridge_bad_input_exit_2)
     expect 2 'did you mean willett' -- "$demscale" bridge --model wilett
     expect 2 'contact_angle_deg = 95' -- "$demscale" bridge --theta 95
     expect 2 '\-\-vhat = -1' -- "$demscale" bridge --vhat -1
     # Found by the fuzz corpus: outside the exact solver's scope is bad input (exit 2), not a failure.
-    expect 2 'concave \(pendular\) bridge' -- "$demscale" bridge --vhat 0.1 --theta 89.9 --model exact ;;
+    expect 2 'concave \(pendular\) bridge' -- "$demscale" bridge --vhat 0.1 --theta 89.9 --model exact
+    expect 2 '\-\-geometry = wall: accepted sphere-sphere or sphere-wall' -- "$demscale" bridge --geometry wall
+    expect 2 'with --geometry sphere-wall' -- "$demscale" bridge --geometry sphere-wall --model willett
+    expect 2 '\-\-theta-wall = 30: accepted only with --geometry sphere-wall' -- "$demscale" bridge --theta-wall 30 ;;
   bridge_error_quick)
     expect 0 'mikami1998' -- "$demscale" bridge-error --quick --out "$work/be"
-    for f in bridge_error.csv bridge_error_summary.csv bridge_mikami_error.png bridge_speed_error.png; do
+    for f in bridge_error.csv bridge_error_summary.csv bridge_wall_error.csv bridge_mikami_error.png bridge_speed_error.png; do
       [ -s "$work/be/$f" ] || fail "$f missing"
     done
     head -20 "$work/be/bridge_error.csv" | grep -q '^vhat,theta_deg,x,hhat,fhat_exact,fhat_mikami,fhat_yun_park_2017,fhat_willett' \
-      || fail "bridge_error.csv header" ;;
+      || fail "bridge_error.csv header"
+    grep -q '^vhat,theta_deg,x,hhat,fhat_exact,fhat_mikami_wall,rel_error,rupture_ratio$' "$work/be/bridge_wall_error.csv" \
+      || fail "bridge_wall_error.csv header"
+    grep -q '^mikami1998 sphere-wall' "$work/out" || fail "summary lacks the sphere-wall fit" ;;
   slump_small_json)
     expect 0 '"spread_d95_mm"' -- "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --format json --out "$work/s"
     for key in particles steps dt_s wall_s final_height_mm slump_mm spread_d95_mm spread_max_mm repose_angle_deg; do
