@@ -215,13 +215,14 @@ std::pair<double, double> bridge_by_quadrature(double beta, double r0, ContactAn
 
 namespace {
 
-// On a plate the filling angles with a shape for one neck form up to two intervals: narrow
-// contact lines just above the neck (the stable bridges), and wide ones; between them the meridian
-// turns before it meets the plate at its angle. The volume grows with β in each. A geometric scan
-// up from the neck finds the first interval whose volumes reach V̂ (bisection pushes an interval's
-// end when V̂ lies beyond the scan's last point in it); Brent's method solves there.
+// The filling angles with a shape for one neck can form more than one interval: on a plate,
+// narrow contact lines just above the neck (the stable bridges) and wide ones, between which the
+// meridian turns before it meets the plate at its angle; between spheres at large θ, where the
+// widest contact lines bulge. The volume grows with β in each. A geometric scan up from the neck
+// finds the first interval whose volumes reach V̂ (bisection pushes an interval's end when V̂ lies
+// beyond the scan's last point in it); Brent's method solves there.
 template <class VolumeAt>
-std::optional<BridgeShape> plate_shape_with_volume(double r0, double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol,
+std::optional<BridgeShape> scanned_shape_with_volume(double r0, double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol,
                                                    double beta_min, double beta_limit, VolumeAt& volume_at) {
     constexpr int n = 48;
     const double first = beta_min * (1 + 1e-6), last = beta_limit - 1e-6, ratio = std::pow(last / first, 1.0 / (n - 1));
@@ -266,15 +267,17 @@ std::optional<BridgeShape> shape_with_volume(double r0, double vhat, double thet
     // reaches sin β only tangentially; back off from that limit until the end point is well defined.
     const double beta_limit = pi / 2 - theta;
     const double beta_min = std::asin(r0);  // the neck is narrower than the contact line
-    if (lower.plate) return plate_shape_with_volume(r0, vhat, theta, lower, tol, beta_min, beta_limit, volume_at);
+    if (lower.plate) return scanned_shape_with_volume(r0, vhat, theta, lower, tol, beta_min, beta_limit, volume_at);
+    // Between spheres: down from the widest contact line; where that finds nothing (large θ), the scan.
+    const auto scanned = [&] { return scanned_shape_with_volume(r0, vhat, theta, lower, tol, beta_min, beta_limit, volume_at); };
     double beta_hi = beta_limit;
     std::optional<double> v_hi;
     for (double gap = 1e-6; gap < 0.5 && !v_hi; gap *= 4) {
         beta_hi = beta_limit - gap;
-        if (!(r0 < std::sin(beta_hi))) return std::nullopt;
+        if (!(r0 < std::sin(beta_hi))) return scanned();
         v_hi = volume_at(beta_hi);
     }
-    if (!v_hi || *v_hi < vhat) return std::nullopt;  // even the widest contact holds too little
+    if (!v_hi || *v_hi < vhat) return scanned();  // the widest contact bulges, or holds too little
     // Walk down from beta_hi to bracket the volume (V grows with β at fixed neck).
     double hi = beta_hi, lo = beta_hi;
     for (int i = 1; i <= 60; ++i) {
@@ -282,10 +285,10 @@ std::optional<BridgeShape> shape_with_volume(double r0, double vhat, double thet
         const auto v = volume_at(lo);
         if (v && *v < vhat) break;
         if (v) hi = lo;
-        if (i == 60) return std::nullopt;
+        if (i == 60) return scanned();
     }
     auto beta = brent_root([&](double b) { auto v = volume_at(b); return v ? *v - vhat : NAN; }, lo, hi, tol.root);
-    if (!beta) return std::nullopt;
+    if (!beta) return scanned();
     return integrate(*beta, r0, theta, lower, tol);
 }
 
