@@ -8,6 +8,7 @@
 #include "bridge/bridge_model.hpp"
 #include "bridge/bridge_table.hpp"
 #include "bridge/mikami.hpp"
+#include "bridge/validity.hpp"
 #include "bridge/young_laplace.hpp"
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
@@ -45,7 +46,7 @@ void exact_row(const bridge::YoungLaplaceBridge& family, const Options& o, io::T
     if (r.status == bridge::YoungLaplaceStatus::not_converged) throw std::runtime_error("exact bridge: " + r.message);
     t.columns.insert(t.columns.end(), {"neck_radius_over_r", "filling_angle_deg", "curvature_kappa", "volume_check"});
     if (wall) t.columns.push_back("wall_footprint_over_r");
-    row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0});
+    row.insert(row.end(), {r.ok() ? r.shape.fhat_neck : 0.0, r.hhat_rupture, r.ok() ? 1.0 : 0.0, std::string("ok")});
     if (r.ok()) {
         row.insert(row.end(), {r.shape.neck_radius, r.shape.filling_angle * 180 / M_PI, r.shape.curvature, r.shape.volume});
         if (wall) row.push_back(r.shape.plate_radius);
@@ -69,7 +70,13 @@ int run_bridge(const Options& o) {
     t.metadata = {{"normalisation", wall ? "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = gap to the wall / R; vhat = V / R^3"
                                          : "f_over_2pi_r_gamma = F/(2 pi R gamma); hhat = full gap / R; vhat = V / R^3"}};
     if (wall) t.metadata.push_back({"wall contact angle", format_number(o.theta_wall_deg.value_or(o.theta_deg)) + " deg"});
-    t.columns = {"model", "vhat", "theta_deg", "hhat", "f_over_2pi_r_gamma", "hhat_rupture", "bridge_exists"};
+    t.columns = {"model", "vhat", "theta_deg", "hhat", "f_over_2pi_r_gamma", "hhat_rupture", "bridge_exists", "validity"};
+    // The flags' codes in the row ("ok": none), each flag's sentence as a note.
+    auto flag = [&](const std::vector<bridge::ValidityWarning>& flags) {
+        std::string codes;
+        for (const auto& f : flags) codes += (codes.empty() ? "" : ";") + f.code, t.notes.push_back(f.code + ": " + f.message);
+        return codes.empty() ? std::string("ok") : codes;
+    };
     std::vector<io::Cell> row = {o.model, o.vhat, o.theta_deg, o.hhat};
     if (o.model == "exact") {
         exact_row(wall ? bridge::YoungLaplaceBridge::sphere_plane(o.vhat, theta, theta_wall) : bridge::YoungLaplaceBridge(o.vhat, theta),
@@ -84,17 +91,21 @@ int run_bridge(const Options& o) {
         const auto k = bridge::mikami_coefficients(o.vhat, theta, {bridge::parse_mikami_variant(o.model, "--model")},
                                                    bridge::BridgeGeometry::sphere_wall);
         const auto e = bridge::evaluate_mikami(k, o.hhat);
-        row.insert(row.end(), {bridge::f_over_2pi_r_gamma(k, e.fhat), k.hhat_rupture, e.bridge_exists ? 1.0 : 0.0});
+        auto flags = bridge::check_validity(o.vhat, theta, k);
+        if (e.clamped) flags.push_back({"clamped", "the fit is negative here; printed as 0"});
+        const double f = bridge::f_over_2pi_r_gamma(k, e.fhat);
+        row.insert(row.end(), {f, k.hhat_rupture, e.bridge_exists && f > 0 ? 1.0 : 0.0, flag(flags)});
         if (!e.bridge_exists) t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(k.hhat_rupture) + "): no bridge, force 0");
         t.notes.push_back("Mikami's sphere-wall fit overestimates the exact force (bridge-error, bridge_wall_error.csv)");
     } else {
         std::optional<bridge::BridgeTable> table;
         if (o.model == "table") table = io::read_bridge_table(o.table);
         const auto m = bridge::make_bridge_model(o.model, table ? &*table : nullptr);
-        const double hc = m->hhat_rupture(o.vhat, theta);
-        const bool exists = o.hhat <= hc;
-        row.insert(row.end(), {m->fhat(o.vhat, theta, o.hhat), hc, exists ? 1.0 : 0.0});
-        if (!exists) t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(hc) + "): no bridge, force 0");
+        const auto e = bridge::evaluate(*m, o.vhat, theta, o.hhat);
+        row.insert(row.end(), {e.fhat, e.hhat_rupture, e.bridge_exists ? 1.0 : 0.0, flag(e.flags)});
+        if (o.hhat > e.hhat_rupture)
+            t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(e.hhat_rupture) + "): no bridge, force 0");
+        if (const auto range = m->fitted_range(); !range.stated) t.notes.push_back("fitted range: " + range.source);
     }
     t.rows.push_back(std::move(row));
     std::cout << io::render(t, format);

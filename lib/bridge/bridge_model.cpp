@@ -46,6 +46,16 @@ public:
         const auto& k = coefficients(vhat, theta);
         return f_over_2pi_r_gamma(k, mikami_fhat(k, hhat));
     }
+    FittedRange fitted_range() const override {
+        const ValidityRange r;
+        return {r.vhat_min, r.vhat_max, r.theta_max_deg,
+                "the range commonly quoted for this class of fits; Mikami et al. (1998)'s own statement not consulted (docs/model.md)"};
+    }
+    std::optional<ValidityWarning> finding(double vhat, ContactAngle theta, double hhat) const override {
+        const auto& k = coefficients(vhat, theta);
+        if (!evaluate_mikami(k, hhat).clamped) return std::nullopt;
+        return ValidityWarning{"clamped", "the fit is negative here (exp(A h^ + B) + C < 0 before its rupture distance); printed as 0"};
+    }
 
 private:
     const MikamiCoefficients& coefficients(double vhat, ContactAngle theta) const {
@@ -65,6 +75,9 @@ public:
     double fhat(double vhat, ContactAngle theta, double hhat) const override {
         const auto r = checked(vhat, theta, family(vhat, theta).solve(std::max(hhat, 0.0)));
         return r.status == YoungLaplaceStatus::above_rupture ? 0.0 : r.shape.fhat_neck;
+    }
+    FittedRange fitted_range() const override {
+        return {0, std::numeric_limits<double>::infinity(), 90, "no fit: concave bridges, refused with a message elsewhere"};
     }
 
 private:
@@ -98,6 +111,11 @@ public:
                              "values where Willett et al.'s fit is finite");
         return f;
     }
+    FittedRange fitted_range() const override {
+        return {1e-6, 1.0, 90,
+                "Willett et al. (2000)'s fitted range not consulted; demscale evaluates V^ in [1e-6, 1], where the fit stays finite",
+                false};
+    }
 
 private:
     // Pendular-bridge fits: cubic polynomials in ln V̂ that overflow far outside the volumes fitted
@@ -116,6 +134,13 @@ public:
         if (hhat > hhat_rupture(vhat, theta)) return 0.0;
         return toroidal_bridge(vhat, theta, hhat).fhat;
     }
+    FittedRange fitted_range() const override {
+        return {0, std::numeric_limits<double>::infinity(), 90, "an approximation (circle meridian), not a fit: no range", false};
+    }
+    std::optional<ValidityWarning> finding(double vhat, ContactAngle theta, double hhat) const override {
+        if (hhat > hhat_rupture(vhat, theta) || toroidal_bridge(vhat, theta, hhat).fhat > 0) return std::nullopt;
+        return ValidityWarning{"shape_not_found", "no circle meridian holds this volume at this gap and contact angle"};
+    }
 };
 
 class TableModel final : public BridgeModel {
@@ -124,6 +149,10 @@ public:
     std::string_view name() const override { return "table"; }
     double hhat_rupture(double vhat, ContactAngle theta) const override { return pair(vhat, theta).hhat_rupture; }
     double fhat(double vhat, ContactAngle theta, double hhat) const override { return pair(vhat, theta).fhat(hhat); }
+    FittedRange fitted_range() const override {
+        const auto& g = table_.grid();
+        return {g.vhat_min, g.vhat_max, g.theta_max_deg, "the tabulated grid (data/bridge_table.csv); it refuses inputs outside"};
+    }
 
 private:
     const BridgeTable::Pair& pair(double vhat, ContactAngle theta) const {
@@ -136,6 +165,29 @@ private:
 }  // namespace
 
 std::span<const std::string_view> bridge_model_names() { return names; }
+
+ModelEvaluation evaluate(const BridgeModel& model, double vhat, ContactAngle theta, double hhat) {
+    ModelEvaluation e;
+    e.hhat_rupture = model.hhat_rupture(vhat, theta);
+    e.fhat = model.fhat(vhat, theta, hhat);
+    e.bridge_exists = hhat <= e.hhat_rupture && e.fhat > 0;
+    const auto range = model.fitted_range();
+    if (range.stated && (vhat < range.vhat_min || vhat > range.vhat_max || theta.degrees() > range.theta_max_deg))
+        e.flags.push_back({"outside_fitted_range", std::string(model.name()) + " is fitted for V^ in [" + format_number(range.vhat_min) +
+                                                       ", " + format_number(range.vhat_max) + "], theta <= " +
+                                                       format_number(range.theta_max_deg) + " deg (" + range.source + ")"});
+    const double bound = std::cos(theta.radians());
+    if (e.fhat > bound * (1 + 1e-12))
+        e.flags.push_back({"above_physical_bound", "F/(2 pi R gamma) = " + format_number(e.fhat) + " exceeds cos theta = " +
+                                                       format_number(bound) + ", the small-volume limit at contact"});
+    if (auto f = model.finding(vhat, theta, hhat)) {
+        if (f->code == "shape_not_found")
+            throw InputError("vhat, theta, hhat", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg, " + format_number(hhat),
+                             "a bridge the " + std::string(model.name()) + " model can shape (" + f->message + ")");
+        e.flags.push_back(*f);
+    }
+    return e;
+}
 
 std::unique_ptr<BridgeModel> make_bridge_model(std::string_view name, const BridgeTable* table) {
     if (name == "exact") return std::make_unique<ExactModel>();

@@ -80,3 +80,47 @@ TEST_CASE("Tabulated model: continuous across cells, refuses what it does not co
     CHECK_THROWS_AS(table.fhat(0.01, ContactAngle{Degrees{50}}, 0.0), InputError);
     CHECK_THROWS_AS(io::read_bridge_table(DEMSCALE_SOURCE_DIR "/data/table1.toml"), InputError);
 }
+
+namespace {
+bool flagged(const ModelEvaluation& e, const std::string& code) {
+    return std::any_of(e.flags.begin(), e.flags.end(), [&](const ValidityWarning& w) { return w.code == code; });
+}
+}  // namespace
+
+TEST_CASE("Fitted models flag themselves: range, physical bound, clamping, no shape", "[bridge][models][validity]") {
+    const ContactAngle zero{Degrees{0}}, forty{Degrees{40}};
+    const auto mikami = make_bridge_model("mikami1998");
+    // The cases that printed impossible numbers without a word. The bound F/(2πRγ) ≤ cos θ is the
+    // exact bridge's small-volume limit at contact (young_laplace_test: approached from below).
+    for (auto [vhat, theta] : {std::pair{1e-308, zero}, {1e-7, forty}}) {
+        const auto e = evaluate(*mikami, vhat, theta, 0.0);
+        INFO("V^ = " << vhat);
+        CHECK(e.fhat > std::cos(theta.radians()));
+        CHECK(flagged(e, "outside_fitted_range"));
+        CHECK(flagged(e, "above_physical_bound"));
+    }
+    CHECK(evaluate(*mikami, 0.05544, zero, 0.0).flags.empty());  // Table 1's bridge: inside, below the bound
+    CHECK(flagged(evaluate(*make_bridge_model("willett"), 1e-6, zero, 0.0), "above_physical_bound"));
+    // The printed variant turns negative before its rupture distance: 0, flagged, and no bridge.
+    const auto clamped = evaluate(*make_bridge_model("yun-park-2017"), 1e-3, zero, 0.06);
+    CHECK(clamped.fhat == 0);
+    CHECK(0.06 < clamped.hhat_rupture);
+    CHECK(flagged(clamped, "clamped"));
+    CHECK_FALSE(clamped.bridge_exists);
+    // No circle meridian: an error naming the inputs, not a force of 0.
+    CHECK_THROWS_AS(evaluate(*make_bridge_model("toroidal"), 0.3, ContactAngle{Degrees{70}}, 0.1), InputError);
+    // Every model: a bridge exists exactly where the printed force is positive; its range has a source.
+    const auto table = io::read_bridge_table(table_path);
+    for (auto name : bridge_model_names()) {
+        const auto m = make_bridge_model(name, &table);
+        CHECK_FALSE(m->fitted_range().source.empty());
+        if (name == "exact") continue;
+        for (double vhat : {1e-4, 0.01, 0.1})
+            for (double x : {0.0, 0.5, 0.95, 1.2}) {
+                const double hhat = x * m->hhat_rupture(vhat, zero);
+                const auto e = evaluate(*m, vhat, zero, hhat);
+                INFO(name << " V^ = " << vhat << ", h^ = " << hhat);
+                CHECK(e.bridge_exists == (e.fhat > 0));
+            }
+    }
+}

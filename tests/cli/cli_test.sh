@@ -150,12 +150,16 @@ case $case_name in
     grep -Eq 'mikami1998 +0.05544 +0 +0.5 +0 ' "$work/out" || fail "force above rupture must be 0"
     # A sphere above a wall: the exact bridge (with the footprint on the wall) below the bound
     # F/(2 pi R gamma) = 2 cos theta, and Mikami's wall fit above it at Table 1's V^.
-    expect 0 '^model,vhat,theta_deg,hhat,f_over_2pi_r_gamma,hhat_rupture,bridge_exists,neck_radius_over_r,filling_angle_deg,curvature_kappa,volume_check,wall_footprint_over_r$' \
+    expect 0 '^model,vhat,theta_deg,hhat,f_over_2pi_r_gamma,hhat_rupture,bridge_exists,validity,neck_radius_over_r,filling_angle_deg,curvature_kappa,volume_check,wall_footprint_over_r$' \
       -- "$demscale" bridge --geometry sphere-wall --vhat 0.05544 --model exact --format csv
     exact=$(awk -F, '$1 == "exact" {print $5}' "$work/out")
     expect 0 '^mikami1998,0.05544' -- "$demscale" bridge --geometry sphere-wall --vhat 0.05544 --model mikami1998 --format csv
     mikami=$(awk -F, '$1 == "mikami1998" {print $5}' "$work/out")
-    awk -v e="$exact" -v m="$mikami" 'BEGIN { exit !(e > 1 && e < 2 && m > e) }' || fail "sphere-wall forces: exact $exact, Mikami $mikami" ;;
+    awk -v e="$exact" -v m="$mikami" 'BEGIN { exit !(e > 1 && e < 2 && m > e) }' || fail "sphere-wall forces: exact $exact, Mikami $mikami"
+    grep -q 'above_physical_bound' "$work/out" || fail "Mikami's wall fit above 4 pi R gamma not flagged"
+    # A fit outside its range says so, in the row and in a note.
+    expect 0 'outside_fitted_range;above_physical_bound' -- "$demscale" bridge --model mikami1998 --vhat 1e-7 --theta 40
+    grep -q 'note: outside_fitted_range: mikami1998 is fitted for' "$work/out" || fail "no note for the range" ;;
   bridge_bad_input_exit_2)
     expect 2 'did you mean willett' -- "$demscale" bridge --model wilett
     expect 2 'contact_angle_deg = 95' -- "$demscale" bridge --theta 95
