@@ -139,7 +139,7 @@ int run_bridge_error(const Options& o) {
 // (each its own compiled engine), for the whole spread time (no stop at rest, so every row steps
 // equally). EPSD runs also with Ai's rolling dashpot (η_r = 0.3), and with the energy ledger.
 int run_dem_bench(const Options& o) {
-    auto scene = slump::load_slump_scene(o.scene);
+    auto scene = load_scene(o.scene);
     scene.rest_duration_s = 1e30;
     slump::SlumpPhases settle;
     settle.settle_only = true;

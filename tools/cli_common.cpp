@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "core/input_error.hpp"
+#include "slump/bridge_warnings.hpp"
 #include "slump/response_study.hpp"
 #include "slump/scene_similarity.hpp"
 
@@ -47,6 +48,12 @@ io::TableConfig load_config(const std::string& path) {
     auto c = io::load_table_config(path);
     c.source = display_path(c.source);
     return c;
+}
+
+slump::SlumpScene load_scene(const std::string& path) {
+    auto scene = slump::load_slump_scene(path);
+    for (const auto& w : slump::bridge_warnings(scene)) std::cerr << "warning: " << w << "\n";
+    return scene;
 }
 
 io::TableConfig similarity_inputs(const std::string& config_path, const std::string& scene_path) {

@@ -12,6 +12,7 @@
 
 #include "io/table_config.hpp"
 #include "io/table_format.hpp"
+#include "slump/slump_scene.hpp"
 
 namespace demscale::cli {
 
@@ -38,6 +39,9 @@ io::TableConfig load_config(const std::string& path);
 // The inputs of the similarity table and Figs. 3-4: a Table-1 configuration, those a scene implies,
 // or both when they agree (else InputError listing the differing keys); neither: data/table1.toml.
 io::TableConfig similarity_inputs(const std::string& config_path, const std::string& scene_path);
+// A slump scene for a command that runs it, its bridge models' warnings printed on stderr
+// (slump/bridge_warnings.hpp): every such command says when a fit is used outside its trust.
+slump::SlumpScene load_scene(const std::string& path);
 std::string display_path(const std::string& path);
 
 // Option checks that also refuse NaN and infinity (CLI11's own number checks let NaN through).

@@ -24,7 +24,7 @@ struct Options {
 
 slump::ResponsePlan plan_from(const Options& o) {
     slump::ResponsePlan plan;
-    plan.fine = slump::load_slump_scene(o.scene);
+    plan.fine = load_scene(o.scene);
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
     plan.factors = parse_factor_range(o.range, o.levels, "--range", "--levels");
     plan.offset_exponent = o.offset;

@@ -27,6 +27,7 @@ int run_report(const Options& o) {
     report::ReportOptions r;
     r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
     r.scene_label = display_path(r.scene_path);
+    load_scene(r.scene_path);  // its bridge warnings, before the long run
     // The similarity table follows the scene the user names; the shipped scenes go with the paper's Table 1.
     r.similarity = similarity_inputs(o.config, o.scene);
     r.bridge_table_path = default_bridge_table;

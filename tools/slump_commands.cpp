@@ -10,6 +10,7 @@
 #include "cli_common.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "slump/bridge_warnings.hpp"
 #include "slump/liggghts_export.hpp"
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
@@ -62,7 +63,7 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     use_threads(o.threads);
-    const auto fine = slump::load_slump_scene(o.scene);
+    const auto fine = load_scene(o.scene);
     auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
     std::unique_ptr<io::VtkSeries> series;
@@ -136,6 +137,7 @@ int run_slump_command(const Options& o) {
     j["threads"] = omp_get_max_threads();
     const auto warnings = slump::geometry_warnings(scene, r.particles);
     j["warnings"] = warnings;
+    j["bridge_warnings"] = slump::bridge_warnings(scene);  // as printed on stderr at the start
     if (format == io::Format::json) {
         std::cout << j.dump(2) << "\n";
     } else {
@@ -152,7 +154,7 @@ int run_slump_command(const Options& o) {
 // `demscale slump --start`), so both engines lift and spread the very same particles.
 int run_export_liggghts(const Options& o) {
     use_threads(o.threads);
-    const auto scene = slump::load_slump_scene(o.scene);
+    const auto scene = load_scene(o.scene);
     slump::SlumpPhases phases;
     phases.settle_only = true;
     const auto r = slump::run_slump(scene, slump_progress(nullptr, 0), o.force_dt, phases);
@@ -166,7 +168,7 @@ int run_export_liggghts(const Options& o) {
 
 // Measures a pile written by another engine (a LIGGGHTS dump) with demscale's own measurements.
 int run_pile(const Options& o) {
-    const auto scene = slump::load_slump_scene(o.scene);
+    const auto scene = slump::load_slump_scene(o.scene);  // measures only: no bridge runs
     const auto p = io::read_liggghts_dump(o.dump, scene.material.density);
     const auto m = slump::measure_pile(p, slump::lone_sphere_top(scene));
     nlohmann::ordered_json j;

@@ -29,7 +29,7 @@ struct Options {
 
 slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) {
     slump::StudyPlan plan;
-    plan.fine = slump::load_slump_scene(o.scene);
+    plan.fine = load_scene(o.scene);
     plan.exponents = parse_exponents(o.exponents, exponent_field);
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
     plan.scaled = o.scaled;

@@ -7,6 +7,7 @@
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "slump/bridge_warnings.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/fill.hpp"
 #include "slump/measurements.hpp"
@@ -218,4 +219,30 @@ TEST_CASE("A scene implies the similarity table's inputs, and a disagreeing conf
     REQUIRE(d.size() == 2);
     CHECK(d[0].find("liquid.surface_tension_n_per_m = 0.074 in the config") == 0);
     CHECK(d[1].find("liquid.rupture = lian1993 in the scene") != std::string::npos);
+}
+
+TEST_CASE("A scene's bridge warnings: none for the default wet scene, the wall fit's excess over the exact bridge with wet walls",
+          "[slump][bridge][validity]") {
+    slump::SlumpScene s;  // wet, Mikami's published form, θ = 0: inside its range and bound
+    CHECK(slump::bridge_warnings(s).empty());
+    s.wet = false;
+    s.wet_walls = true;
+    CHECK(slump::bridge_warnings(s).empty());  // dry: no bridge at all
+    s.wet = true;
+    // Mikami's wall fit exceeds the small-volume bound 4πRγ cos θ, and the exact sphere–plane
+    // bridge (bridge-models.md: +37.6 % at contact at Table 1's V̂) by tens of percent.
+    const auto w = slump::bridge_warnings(s);
+    REQUIRE(w.size() == 2);
+    CHECK(w[0].find("exceeds the physical bound") != std::string::npos);
+    CHECK(w[1].find("harder at contact than the exact sphere-plane bridge") != std::string::npos);
+    const double excess = std::stod(w[1].substr(w[1].find("pulls ") + 6));
+    CHECK(excess > 30);
+    CHECK(excess < 45);
+    // The printed variant (Eq. 1 with 2π) pulls above the sphere–sphere bound at contact, and says so.
+    s.wet_walls = false;
+    s.bridge.variant = bridge::MikamiVariant::yun_park_2017;
+    const auto printed = slump::bridge_warnings(s);
+    REQUIRE(printed.size() == 1);
+    CHECK(printed[0].find("particle-particle bridges (yun-park-2017)") != std::string::npos);
+    CHECK(printed[0].find("exceeds the physical bound 2") != std::string::npos);
 }
