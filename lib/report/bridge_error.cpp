@@ -112,6 +112,9 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
     sum.metadata = {{"grid", std::to_string(grid.vhat.size()) + " V^ x " + std::to_string(grid.theta_deg.size()) +
                                  " theta x " + std::to_string(grid.gap_fraction.size()) + " h^/h^_c"},
                     {"outside_solver_scope", std::to_string(study.outside_scope) + " grid points (bulging bridges)"},
+                    {"sphere-wall row", "Mikami's wall fit against the exact sphere-plane bridge: " + std::to_string(grid.wall_vhat.size()) +
+                                            " V^ x " + std::to_string(grid.wall_theta_deg.size()) + " theta x " +
+                                            std::to_string(grid.gap_fraction.size()) + " h^/h^_c (bridge_wall_error.csv)"},
                     {"cost", "ns per force evaluation at V^ = 0.05544, theta = 0 (per-pair setup cached)"}};
     sum.columns = {"model", "points", "max_abs_rel_error", "median_abs_rel_error", "fraction_over_5pct",
                    "fraction_over_20pct", "max_abs_rupture_error", "ns_per_evaluation"};
