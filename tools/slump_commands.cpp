@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli_common.hpp"
+#include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "slump/bridge_warnings.hpp"
@@ -28,17 +29,29 @@ struct Options {
     std::string format = "text";
     std::string out_dir = default_plots;
     double vtk_every = 0;
-    int threads = 0;  // 0: OpenMP's default (all cores)
+    int threads = 0;  // 0: the idle cores
     bool force_dt = false, no_png = false, fixed_time = false, energy = false;
     std::string start;  // settled state to lift from
     std::string resume; // checkpoint of an interrupted run
     std::string dump;   // LIGGGHTS dump to measure
 };
 
-// --threads: N OpenMP threads; 0 leaves OpenMP's default (all cores).
+// --threads: N OpenMP threads; 0: the cores no other job is using (core/idle_cores.hpp), said on
+// stderr when that is fewer than all.
 void use_threads(int threads) {
-    if (threads < 0) throw InputError("--threads", std::to_string(threads), ">= 1 (0: all cores)");
-    if (threads > 0) omp_set_num_threads(threads);
+    if (threads < 0) throw InputError("--threads", std::to_string(threads), ">= 1 (0: the idle cores)");
+    if (threads > 0) {
+        omp_set_num_threads(threads);
+        return;
+    }
+    const int cores = omp_get_num_procs();
+    const auto load = load_average();
+    if (!load) return;
+    const int idle = idle_cores(cores, *load);
+    omp_set_num_threads(idle);
+    if (idle < cores)
+        std::fprintf(stderr, "note: %d of %d cores busy with other work (load %.2f): running on %d thread%s (--threads N to choose)\n",
+                     cores - idle, cores, *load, idle, idle == 1 ? "" : "s");
 }
 
 // Progress on stderr: redrawn in place on a terminal, one line per phase otherwise.
@@ -201,14 +214,14 @@ std::vector<Command> slump_commands(CLI::App& app) {
                     "book the energy ledger (every loss, wall work, balance) into slump_history.csv; about 10 % slower");
     slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");
     slump->add_option("--resume", o->resume, "continue an interrupted run from its checkpoint (OUT/slump.ckpt)");
-    slump->add_option("--threads", o->threads, "OpenMP threads (default: all cores)");
+    slump->add_option("--threads", o->threads, "OpenMP threads (default: the cores no other job is using)");
     slump->add_flag("--fixed-time", o->fixed_time, "run the whole spread time, no early stop at rest (engine comparisons)");
 
     auto* exp = app.add_subcommand("export", "write a scene for another DEM engine");
     auto* lig = exp->add_subcommand("liggghts", "settle the fill, then write a LIGGGHTS deck, data file and cone STL");
     lig->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     lig->add_option("--out", o->out_dir, "output folder")->required();
-    lig->add_option("--threads", o->threads, "OpenMP threads for the settling run (default: all cores)");
+    lig->add_option("--threads", o->threads, "OpenMP threads for the settling run (default: the idle cores)");
     exp->require_subcommand(1);
 
     auto* pile = app.add_subcommand("pile", "measure a pile written by LIGGGHTS (text dump with x y z radius)");
