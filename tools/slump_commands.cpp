@@ -1,6 +1,7 @@
 // Subcommands of the slump test: slump (one run of a scene, optionally coarse-grained).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -36,14 +37,15 @@ struct Options {
     std::string dump;   // LIGGGHTS dump to measure
 };
 
-// --threads: N OpenMP threads; 0: the cores no other job is using (core/idle_cores.hpp), said on
-// stderr when that is fewer than all.
+// --threads: N OpenMP threads; 0: OMP_NUM_THREADS when set, else the cores no other job is using
+// (core/idle_cores.hpp), said on stderr when that is fewer than all.
 void use_threads(int threads) {
     if (threads < 0) throw InputError("--threads", std::to_string(threads), ">= 1 (0: the idle cores)");
     if (threads > 0) {
         omp_set_num_threads(threads);
         return;
     }
+    if (std::getenv("OMP_NUM_THREADS")) return;  // the user's (or CI's) own choice
     const int cores = omp_get_num_procs();
     const auto load = load_average();
     if (!load) return;
