@@ -178,8 +178,8 @@ ModelEvaluation evaluate(const BridgeModel& model, double vhat, ContactAngle the
                                                        format_number(range.theta_max_deg) + " deg (" + range.source + ")"});
     const double bound = std::cos(theta.radians());
     if (e.fhat > bound * (1 + 1e-12))
-        e.flags.push_back({"above_physical_bound", "F/(2 pi R gamma) = " + format_number(e.fhat) + " exceeds cos theta = " +
-                                                       format_number(bound) + ", the small-volume limit at contact"});
+        e.flags.push_back({"above_physical_bound", "F/(2 pi R gamma) = " + format_short(e.fhat, 4) + " exceeds cos theta = " +
+                                                       format_short(bound, 4) + ", the small-volume limit at contact"});
     if (auto f = model.finding(vhat, theta, hhat)) {
         if (f->code == "shape_not_found")
             throw InputError("vhat, theta, hhat", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg, " + format_number(hhat),

@@ -35,8 +35,8 @@ std::vector<ValidityWarning> check_validity(double vhat, ContactAngle theta, con
     const double contact = f_over_pi_r_gamma(k, mikami_fhat(k, 0.0));
     if (contact > bound_over_pi_r_gamma)
         out.push_back({"above_physical_bound",
-                       "F(contact)/(pi R gamma) = " + format_number(contact) + " exceeds the physical bound " +
-                           format_number(bound_over_pi_r_gamma) + " (" + std::string(to_string(k.geometry)) +
+                       "F(contact)/(pi R gamma) = " + format_short(contact, 4) + " exceeds the physical bound " +
+                           format_short(bound_over_pi_r_gamma, 4) + " (" + std::string(to_string(k.geometry)) +
                            ", small-volume limit)"});
     return out;
 }
