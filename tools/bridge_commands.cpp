@@ -92,7 +92,7 @@ int run_bridge(const Options& o) {
                                                    bridge::BridgeGeometry::sphere_wall);
         const auto e = bridge::evaluate_mikami(k, o.hhat);
         auto flags = bridge::check_validity(o.vhat, theta, k);
-        if (e.clamped) flags.push_back({"clamped", "the fit is negative here; printed as 0"});
+        if (auto c = bridge::clamped_at(k, o.hhat)) flags.push_back(*c);
         const double f = bridge::f_over_2pi_r_gamma(k, e.fhat);
         row.insert(row.end(), {f, k.hhat_rupture, e.bridge_exists && f > 0 ? 1.0 : 0.0, flag(flags)});
         if (!e.bridge_exists) t.notes.push_back("h^ = " + format_number(o.hhat) + " is beyond rupture (" + format_number(k.hhat_rupture) + "): no bridge, force 0");

@@ -50,9 +50,11 @@ io::TableConfig load_config(const std::string& path) {
     return c;
 }
 
-slump::SlumpScene load_scene(const std::string& path) {
+slump::SlumpScene load_scene(const std::string& path, std::vector<std::string>* bridge_warnings) {
     auto scene = slump::load_slump_scene(path);
-    for (const auto& w : slump::bridge_warnings(scene)) std::cerr << "warning: " << w << "\n";
+    const auto warnings = slump::bridge_warnings(scene);
+    for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+    if (bridge_warnings) *bridge_warnings = warnings;
     return scene;
 }
 

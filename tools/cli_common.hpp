@@ -40,8 +40,9 @@ io::TableConfig load_config(const std::string& path);
 // or both when they agree (else InputError listing the differing keys); neither: data/table1.toml.
 io::TableConfig similarity_inputs(const std::string& config_path, const std::string& scene_path);
 // A slump scene for a command that runs it, its bridge models' warnings printed on stderr
-// (slump/bridge_warnings.hpp): every such command says when a fit is used outside its trust.
-slump::SlumpScene load_scene(const std::string& path);
+// (slump/bridge_warnings.hpp) and, when asked, handed back: every such command says when a fit is
+// used outside its trust.
+slump::SlumpScene load_scene(const std::string& path, std::vector<std::string>* bridge_warnings = nullptr);
 std::string display_path(const std::string& path);
 
 // Option checks that also refuse NaN and infinity (CLI11's own number checks let NaN through).

@@ -12,7 +12,6 @@
 #include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
-#include "slump/bridge_warnings.hpp"
 #include "slump/liggghts_export.hpp"
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
@@ -78,7 +77,8 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     use_threads(o.threads);
-    const auto fine = load_scene(o.scene);
+    std::vector<std::string> scene_warnings;
+    const auto fine = load_scene(o.scene, &scene_warnings);
     auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
     std::unique_ptr<io::VtkSeries> series;
@@ -152,7 +152,7 @@ int run_slump_command(const Options& o) {
     j["threads"] = omp_get_max_threads();
     const auto warnings = slump::geometry_warnings(scene, r.particles);
     j["warnings"] = warnings;
-    j["bridge_warnings"] = slump::bridge_warnings(scene);  // as printed on stderr at the start
+    j["bridge_warnings"] = scene_warnings;  // of the fine scene (V^ and theta are the coarse one's too), as printed at the start
     if (format == io::Format::json) {
         std::cout << j.dump(2) << "\n";
     } else {

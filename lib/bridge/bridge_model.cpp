@@ -52,9 +52,7 @@ public:
                 "the range commonly quoted for this class of fits; Mikami et al. (1998)'s own statement not consulted (docs/model.md)"};
     }
     std::optional<ValidityWarning> finding(double vhat, ContactAngle theta, double hhat) const override {
-        const auto& k = coefficients(vhat, theta);
-        if (!evaluate_mikami(k, hhat).clamped) return std::nullopt;
-        return ValidityWarning{"clamped", "the fit is negative here (exp(A h^ + B) + C < 0 before its rupture distance); printed as 0"};
+        return clamped_at(coefficients(vhat, theta), hhat);
     }
 
 private:
@@ -139,7 +137,8 @@ public:
     }
     std::optional<ValidityWarning> finding(double vhat, ContactAngle theta, double hhat) const override {
         if (hhat > hhat_rupture(vhat, theta) || toroidal_bridge(vhat, theta, hhat).fhat > 0) return std::nullopt;
-        return ValidityWarning{"shape_not_found", "no circle meridian holds this volume at this gap and contact angle"};
+        throw InputError("vhat, theta, hhat", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg, " + format_number(hhat),
+                         "a bridge the toroidal model can shape (no circle meridian holds this volume at this gap and contact angle)");
     }
 };
 
@@ -180,12 +179,7 @@ ModelEvaluation evaluate(const BridgeModel& model, double vhat, ContactAngle the
     if (e.fhat > bound * (1 + 1e-12))
         e.flags.push_back({"above_physical_bound", "F/(2 pi R gamma) = " + format_short(e.fhat, 4) + " exceeds cos theta = " +
                                                        format_short(bound, 4) + ", the small-volume limit at contact"});
-    if (auto f = model.finding(vhat, theta, hhat)) {
-        if (f->code == "shape_not_found")
-            throw InputError("vhat, theta, hhat", format_number(vhat) + ", " + format_number(theta.degrees()) + " deg, " + format_number(hhat),
-                             "a bridge the " + std::string(model.name()) + " model can shape (" + f->message + ")");
-        e.flags.push_back(*f);
-    }
+    if (auto f = model.finding(vhat, theta, hhat)) e.flags.push_back(*f);
     return e;
 }
 

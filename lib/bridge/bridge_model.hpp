@@ -35,7 +35,7 @@ public:
     virtual double fhat(double vhat, ContactAngle theta, double hhat) const = 0;  // F/(2πRγ)
     virtual FittedRange fitted_range() const = 0;
     // What the force alone does not show at (V̂, θ, ĥ): "clamped" (the fit was negative and is
-    // printed as 0), "shape_not_found" (the closed form has no shape there); nullopt: nothing.
+    // printed as 0); nullopt: nothing. Throws InputError where a closed form has no shape there.
     virtual std::optional<ValidityWarning> finding(double, ContactAngle, double) const { return std::nullopt; }
 };
 

@@ -41,4 +41,9 @@ std::vector<ValidityWarning> check_validity(double vhat, ContactAngle theta, con
     return out;
 }
 
+std::optional<ValidityWarning> clamped_at(const MikamiCoefficients& k, double hhat) {
+    if (!evaluate_mikami(k, hhat).clamped) return std::nullopt;
+    return ValidityWarning{"clamped", "the fit is negative here (exp(A h^ + B) + C < 0 before its rupture distance); printed as 0"};
+}
+
 }  // namespace demscale::bridge

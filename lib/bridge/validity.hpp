@@ -4,6 +4,7 @@
 // and add the physical checks we can make ourselves.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,8 @@ struct ValidityWarning {
 //                         the small-volume limit the force cannot exceed.
 std::vector<ValidityWarning> check_validity(double vhat, ContactAngle theta, const MikamiCoefficients& k,
                                             const ValidityRange& range = {});
+
+// "clamped" at gap ĥ: the fit is negative there before its rupture distance and is printed as 0.
+std::optional<ValidityWarning> clamped_at(const MikamiCoefficients& k, double hhat);
 
 }  // namespace demscale::bridge

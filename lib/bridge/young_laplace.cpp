@@ -160,13 +160,14 @@ std::optional<BridgeShape> integrate_meniscus(double beta, double r0, double the
     if (!lower.plate) return b;
 
     const double phi_plate = pi / 2 - lower.theta;  // the mirror image of θ_plate − π/2 below the neck
+    if (!(phi_plate > 0)) return std::nullopt;       // a plate at 90° or more has no neck above it
     const auto foot = integrate_to(
         sys, r0, 1e-3 * (rc - r0), tol,
         [&](const State&, const State& y, bool too_long) {
             return y[2] >= phi_plate ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on;
         },
         [&](const State& y) { return y[2] - phi_plate; }, [&](const State& y) { return std::cos(y[2]) / y[0] - kappa; }, 1.0);
-    if (!foot || phi_plate <= 0) return std::nullopt;
+    if (!foot) return std::nullopt;
     b.plate_radius = (*foot)[0];
     b.half_gap += (*foot)[1];            // the plate lies that far below the neck
     b.volume += (*foot)[3];
