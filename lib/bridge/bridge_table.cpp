@@ -12,33 +12,37 @@ namespace demscale::bridge {
 
 namespace {
 
-// ĥ/ĥ_c at grid coordinate t ∈ [0, 1]: nodes cluster at contact (fast decay at small V̂) and at
-// rupture, where 1 − x ∝ (1 − t)² turns the square-root fold into a smooth function of t.
-double gap_fraction(double t) { return 0.5 * (1.0 - std::cos(std::numbers::pi * t)); }
-double gap_coordinate(double x) { return std::acos(1.0 - 2.0 * x) / std::numbers::pi; }
-
 // Catmull–Rom through p[0..3] at nodes −1, 0, 1, 2, evaluated at f ∈ [0, 1].
 double catmull_rom(const double p[4], double f) {
     return p[1] + 0.5 * f * (p[2] - p[0] + f * (2 * p[0] - 5 * p[1] + 4 * p[2] - p[3] + f * (3 * (p[1] - p[2]) + p[3] - p[0])));
 }
 
-// Four nodes around s ∈ [0, n−1] and the fraction; outside nodes extrapolated linearly by the caller.
+// Four nodes around s ∈ [0, n−1] and the fraction.
 void stencil(double s, int n, int& i0, double& f) {
     i0 = std::clamp(static_cast<int>(std::floor(s)), 0, n - 2);
     f = s - i0;
 }
 
+// Outside nodes extrapolate linearly, or mirror where the function is even about the end node:
+// in the gap coordinate at contact (ĥ ∝ t²), and at a rupture without a fold (ĥ_c − ĥ ∝ (1 − t)²).
 template <class Get>
-double cubic_1d(Get get, int n, int i0, double f) {
+double cubic_1d(Get get, int n, int i0, double f, bool even_at_start = false, bool even_at_end = false) {
     double p[4];
     for (int k = -1; k <= 2; ++k) {
         const int i = i0 + k;
-        p[k + 1] = i < 0 ? 2 * get(0) - get(1) : i >= n ? 2 * get(n - 1) - get(n - 2) : get(i);
+        p[k + 1] = i < 0    ? (even_at_start ? get(1) : 2 * get(0) - get(1))
+                   : i >= n ? (even_at_end ? get(n - 2) : 2 * get(n - 1) - get(n - 2))
+                            : get(i);
     }
     return catmull_rom(p, f);
 }
 
 }  // namespace
+
+// Nodes cluster at contact (fast decay at small V̂) and at rupture, where 1 − x ∝ (1 − t)² turns the
+// square-root fold into a smooth function of t.
+double BridgeTable::gap_fraction(double t) { return 0.5 * (1.0 - std::cos(std::numbers::pi * t)); }
+double BridgeTable::gap_coordinate(double x) { return std::acos(1.0 - 2.0 * x) / std::numbers::pi; }
 
 double BridgeTable::at(int iv, int it, int ix) const {
     return fhat_[(static_cast<std::size_t>(iv) * grid_.theta_points + it) * grid_.gap_points + ix];
@@ -54,22 +58,34 @@ BridgeTable BridgeTable::generate(const BridgeTableGrid& g, const std::function<
         const double vhat = std::exp(std::log(g.vhat_min) + (std::log(g.vhat_max) - std::log(g.vhat_min)) * iv / (g.vhat_points - 1));
         for (int it = 0; it < g.theta_points; ++it) {
             const ContactAngle theta{Degrees{g.theta_max_deg * it / (g.theta_points - 1)}};
-            const YoungLaplaceBridge bridge(vhat, theta);
-            if (!bridge.family_ok()) throw std::runtime_error(bridge.family_message());
-            table.ln_hc_[iv * g.theta_points + it] = std::log(bridge.hhat_rupture());
-            for (int ix = 0; ix < g.gap_points; ++ix) {
-                const double x = gap_fraction(double(ix) / (g.gap_points - 1));
-                const auto r = bridge.solve(x * bridge.hhat_rupture());
-                if (!r.ok())
-                    throw std::runtime_error("table node V^ = " + format_number(vhat) + ", theta = " +
-                                             format_number(theta.degrees()) + " deg, h^/h^_c = " + format_number(x) +
-                                             ": " + r.message);
-                table.fhat_[(static_cast<std::size_t>(iv) * g.theta_points + it) * g.gap_points + ix] = std::log(r.shape.fhat_neck);
+            Pair column;
+            try {
+                column = solve_column(YoungLaplaceBridge(vhat, theta), g.gap_points);
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error("table node V^ = " + format_number(vhat) + ", theta = " + format_number(theta.degrees()) +
+                                         " deg, " + e.what());
             }
+            table.ln_hc_[iv * g.theta_points + it] = std::log(column.hhat_rupture);
+            std::copy(column.column.begin(), column.column.end(),
+                      table.fhat_.begin() + (static_cast<std::ptrdiff_t>(iv) * g.theta_points + it) * g.gap_points);
             if (progress) progress(iv * g.theta_points + it + 1, total);
         }
     }
     return table;
+}
+
+BridgeTable::Pair BridgeTable::solve_column(const YoungLaplaceBridge& bridge, int gap_points) {
+    if (!bridge.family_ok()) throw std::runtime_error(bridge.family_message());
+    Pair p;
+    p.hhat_rupture = bridge.hhat_rupture();
+    p.even_at_rupture = bridge.ruptures_at_piece_end();
+    for (int ix = 0; ix < gap_points; ++ix) {
+        const double x = gap_fraction(double(ix) / (gap_points - 1));
+        const auto r = bridge.solve(x * p.hhat_rupture);
+        if (!r.ok()) throw std::runtime_error("gap node h^/h^_c = " + format_number(x) + ": " + r.message);
+        p.column.push_back(std::log(r.shape.fhat_neck));  // interpolated in ln F^, as the table
+    }
+    return p;
 }
 
 double BridgeTable::node_vhat(int iv) const {
@@ -147,7 +163,7 @@ double BridgeTable::Pair::fhat(double hhat) const {
     int ix;
     double fx;
     stencil(gap_coordinate(x) * (n - 1), n, ix, fx);
-    return std::exp(cubic_1d([&](int k) { return column[k]; }, n, ix, fx));
+    return std::exp(cubic_1d([&](int k) { return column[k]; }, n, ix, fx, true, even_at_rupture));
 }
 
 double BridgeTable::fhat(double vhat, ContactAngle theta, double hhat) const { return prepare(vhat, theta).fhat(hhat); }

@@ -14,6 +14,8 @@
 
 namespace demscale::bridge {
 
+class YoungLaplaceBridge;
+
 struct BridgeTableGrid {
     double vhat_min = 1e-5, vhat_max = 0.3;
     int vhat_points = 16;
@@ -46,10 +48,17 @@ public:
     // One pair type: the (V̂, θ) interpolation done once, leaving a 1-D cubic in the gap per call.
     struct Pair {
         double hhat_rupture = 0;
-        std::vector<double> column;  // F̂ at the gap nodes
+        std::vector<double> column;  // ln F̂ at the gap nodes
+        bool even_at_rupture = false;  // F̂ has a finite slope in ĥ at rupture (no fold): even in t there
         double fhat(double hhat) const;
     };
     Pair prepare(double vhat, ContactAngle theta) const;
+    // The column of one solved family, exactly at its (V̂, θ): F̂ at gap_points gap nodes (the
+    // table's nodes in ĥ/ĥ_c). Throws std::runtime_error naming the node where the solver fails.
+    // ĥ/ĥ_c at gap coordinate t ∈ [0, 1] (the nodes are uniform in t), and its inverse.
+    static double gap_fraction(double t);
+    static double gap_coordinate(double x);
+    static Pair solve_column(const YoungLaplaceBridge& bridge, int gap_points);
 
 private:
     BridgeTableGrid grid_;

@@ -161,13 +161,23 @@ std::optional<BridgeShape> integrate_meniscus(double beta, double r0, double the
 
     const double phi_plate = pi / 2 - lower.theta;  // the mirror image of θ_plate − π/2 below the neck
     if (!(phi_plate > 0)) return std::nullopt;       // a plate at 90° or more has no neck above it
+    // Near the start of the wide contact lines φ only just reaches the plate's angle at its
+    // maximum, which a long step can pass over: the event is the first of φ = π/2 − θ_plate and
+    // dφ/ds = 0, and a foot pinned where φ turned back short of the plate's angle has no shape.
+    const auto rising = [&](const State& y) { return std::cos(y[2]) / y[0] - kappa; };  // dφ/ds
     const auto foot = integrate_to(
         sys, r0, 1e-3 * (rc - r0), tol,
         [&](const State&, const State& y, bool too_long) {
-            return y[2] >= phi_plate ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on;
+            return y[2] >= phi_plate || rising(y) <= 0 ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on;
         },
-        [&](const State& y) { return y[2] - phi_plate; }, [&](const State& y) { return std::cos(y[2]) / y[0] - kappa; }, 1.0);
-    if (!foot) return std::nullopt;
+        [&](const State& y) { return std::max(y[2] - phi_plate, -rising(y)); },
+        [&](const State& y) {
+            if (y[2] - phi_plate >= -rising(y)) return rising(y);
+            const double r = y[0], sin_phi = std::sin(y[2]);
+            return (sin_phi * rising(y) * r + std::cos(y[2]) * sin_phi) / (r * r);  // d(−dφ/ds)/ds
+        },
+        1.0);
+    if (!foot || (*foot)[2] < phi_plate - 1e-9) return std::nullopt;
     b.plate_radius = (*foot)[0];
     b.half_gap += (*foot)[1];            // the plate lies that far below the neck
     b.volume += (*foot)[3];
@@ -221,7 +231,9 @@ namespace {
 // meridian turns before it meets the plate at its angle; between spheres at large θ, where the
 // widest contact lines bulge. The volume grows with β in each. A geometric scan up from the neck
 // finds the first interval whose volumes reach V̂ (bisection pushes an interval's end when V̂ lies
-// beyond the scan's last point in it); Brent's method solves there.
+// beyond the scan's last point in it); Brent's method solves there. On a plate only the first
+// interval counts: a wide contact line belongs to another branch, and taking it would join the
+// stable family to that branch where the first interval stops holding V̂.
 template <class VolumeAt>
 std::optional<BridgeShape> scanned_shape_with_volume(double r0, double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol,
                                                    double beta_min, double beta_limit, VolumeAt& volume_at) {
@@ -230,6 +242,7 @@ std::optional<BridgeShape> scanned_shape_with_volume(double r0, double vhat, dou
     std::optional<std::pair<double, double>> bracket;  // (lo, hi) in β, V(lo) < V̂ ≤ V(hi)
     std::optional<double> below;                        // the last β with a shape holding less than V̂
     double without = beta_min;                          // the last β without a shape
+    bool had_shape = false;
     // Bisects between a β with a shape and one without (the interval's end), for V̂ on the far side.
     auto push = [&](double with, double none, bool want_less) {
         for (int j = 0; j < 50 && !bracket && std::abs(none - with) > 1e-13; ++j) {
@@ -243,11 +256,13 @@ std::optional<BridgeShape> scanned_shape_with_volume(double r0, double vhat, dou
     for (int i = 0; i < n && !bracket; ++i) {
         const double b = first * std::pow(ratio, i);
         const auto v = volume_at(b);
+        had_shape = had_shape || v.has_value();
         if (v && *v >= vhat && below) bracket = {*below, b};
         else if (v && *v >= vhat) push(b, without, true);  // an interval starts above V̂: below it near its start?
         else if (v) below = b;
         else {
             if (below) push(*below, b, false);  // an interval ended below V̂: does it reach V̂ before its end?
+            if (lower.plate && had_shape) break;  // on a plate only the first interval holds the stable bridges
             below.reset(), without = b;
         }
     }
@@ -317,6 +332,22 @@ std::optional<double> widest_neck(double vhat, double theta, const Lower& lower,
 std::optional<Rupture> fold_of_family(double vhat, double theta, const Lower& lower, const YoungLaplaceTolerance& tol, double top) {
     auto half_gap = [&](double r0) { auto b = shape_with_volume(r0, vhat, theta, lower, tol); return b ? b->half_gap : -INFINITY; };
     const double sides = lower.plate ? 1.0 : 2.0;
+    // The largest gap in (lo, hi) given a middle point whose gap exceeds both ends'.
+    auto fold_between = [&](double lo, double d_lo, double mid, double d_mid, double hi, double d_hi) {
+        gsl_function f;
+        f.function = [](double x, void* p) { return -(*static_cast<decltype(half_gap)*>(p))(x); };
+        f.params = &half_gap;
+        std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent),
+                                                                                  gsl_min_fminimizer_free);
+        if (gsl_min_fminimizer_set_with_values(m.get(), &f, mid, -d_mid, lo, -d_lo, hi, -d_hi) != GSL_SUCCESS)
+            return Rupture{sides * d_mid, mid};
+        for (int i = 0; i < 100; ++i) {
+            if (gsl_min_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
+            if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(m.get()), gsl_min_fminimizer_x_upper(m.get()), 0.0, 1e-9) == GSL_SUCCESS)
+                break;
+        }
+        return Rupture{-sides * gsl_min_fminimizer_f_minimum(m.get()), gsl_min_fminimizer_x_minimum(m.get())};
+    };
     constexpr int n = 24;
     std::array<double, n> r{}, d{};
     int best = -1;
@@ -331,7 +362,8 @@ std::optional<Rupture> fold_of_family(double vhat, double theta, const Lower& lo
         // inflection) before it meets the plate at its angle, and for a range of necks no shape
         // holds V̂. The stable bridge stretches along the piece that reaches contact, from the
         // widest neck down; thinner necks beyond the break belong to another piece. When the gap
-        // still grows where the piece ends, the bridge ruptures there: its end, by bisection.
+        // still grows where the piece ends, the bridge ruptures there; when it fell again between
+        // the end and the thinnest scan point, the fold lies between them.
         d.fill(-INFINITY);
         int end = -1;  // the piece's thinnest scan point
         for (int i = n - 1; i >= 0 && (end < 0 || end == i + 1); --i) {
@@ -348,26 +380,13 @@ std::optional<Rupture> fold_of_family(double vhat, double theta, const Lower& lo
                 if (std::isfinite(g)) with = mid, gap = g;
                 else without = mid;
             }
-            return Rupture{gap, with};
+            if (gap >= d[end] || end == n - 1) return Rupture{gap, with, true};
+            return fold_between(with, gap, r[end], d[end], r[end + 1], d[end + 1]);
         }
     }
     if (best < 0) return std::nullopt;
     if (best == 0 || best == n - 1) return Rupture{sides * d[best], r[best]};  // fold at the scan's edge
-    gsl_function f;
-    f.function = [](double x, void* p) { return -(*static_cast<decltype(half_gap)*>(p))(x); };
-    f.params = &half_gap;
-    std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent),
-                                                                              gsl_min_fminimizer_free);
-    if (gsl_min_fminimizer_set_with_values(m.get(), &f, r[best], -d[best], r[best - 1], -d[best - 1], r[best + 1],
-                                           -d[best + 1]) != GSL_SUCCESS)
-        return Rupture{sides * d[best], r[best]};
-    for (int i = 0; i < 100; ++i) {
-        if (gsl_min_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
-        if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(m.get()), gsl_min_fminimizer_x_upper(m.get()), 0.0, 1e-9) ==
-            GSL_SUCCESS)
-            break;
-    }
-    return Rupture{-sides * gsl_min_fminimizer_f_minimum(m.get()), gsl_min_fminimizer_x_minimum(m.get())};
+    return fold_between(r[best - 1], d[best - 1], r[best], d[best], r[best + 1], d[best + 1]);
 }
 
 Lower lower_of(const std::optional<ContactAngle>& plate) { return plate ? Lower{true, plate->radians()} : Lower{}; }
@@ -423,7 +442,11 @@ YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
         return b ? b->half_gap - (lower.plate ? hhat : 0.5 * hhat) : NAN;
     };
     // The stable branch: wide necks, from the fold up to the widest neck; the gap falls along it.
-    const double lo = rupture_->neck_radius, hi = *widest_neck_;
+    const double hi = *widest_neck_;
+    double lo = rupture_->neck_radius;
+    // Where a plate's piece breaks off, its end lies within the bisection's 1e-12 of necks without
+    // a shape: step inside until the end has one (the gap there is h^_c to ~1e-9).
+    for (double step = 1e-11; !std::isfinite(gap_error(lo)) && step < 1e-3; step *= 10) lo = rupture_->neck_radius * (1 + step);
     if (!(gap_error(hi) <= 0)) {
         res.status = YoungLaplaceStatus::outside_scope;
         res.message = "no concave bridge at h^ = " + format_number(hhat) + " (the meniscus would bulge: V^ = " +

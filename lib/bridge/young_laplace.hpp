@@ -69,6 +69,9 @@ std::pair<double, double> bridge_by_quadrature(double filling_angle, double neck
 struct Rupture {
     double hhat = 0;
     double neck_radius = 0;
+    // false: a fold, F − F_c ∝ √(ĥ_c − ĥ); true: the end of a plate's piece (θ_plate > 0), where the
+    // force still has a finite slope in the gap.
+    bool piece_end = false;
 };
 std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
 
@@ -88,6 +91,7 @@ public:
     bool family_ok() const { return rupture_.has_value() && widest_neck_.has_value(); }
     const std::string& family_message() const { return family_message_; }
     double hhat_rupture() const { return rupture_ ? rupture_->hhat : 0.0; }
+    bool ruptures_at_piece_end() const { return rupture_ && rupture_->piece_end; }
 
     // The stable bridge at full gap ĥ ≥ 0. Never a silent number: status says whether a bridge
     // exists (above_rupture: none), and not_converged / outside_scope carry a message.

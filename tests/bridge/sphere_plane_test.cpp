@@ -97,3 +97,41 @@ TEST_CASE("Sphere-plane force: at the neck, at both contact lines, and by virtua
         }
     }
 }
+
+TEST_CASE("Sphere-plane rupture at theta > 0 is the fold of the family: the force follows a square root into it",
+          "[bridge][sphere-plane]") {
+    // At θ = 20° the family's largest gap lies between its coarse scan points, next to where a
+    // piece breaks off; a fold has F(ĥ) − F(ĥ_c) ∝ √(ĥ_c − ĥ): four times the distance, twice the drop.
+    const auto b = YoungLaplaceBridge::sphere_plane(0.05544, deg(20), deg(20));
+    REQUIRE(b.family_ok());
+    const double hc = b.hhat_rupture();
+    auto force = [&](double x) {
+        const auto r = b.solve(x * hc);
+        REQUIRE(r.ok());
+        return r.shape.fhat_neck;
+    };
+    const double at_rupture = force(1.0);
+    const double ratio = (force(1 - 4e-6) - at_rupture) / (force(1 - 1e-6) - at_rupture);
+    CHECK(ratio == Approx(2).epsilon(0.02));
+    CHECK(b.solve(hc * (1 + 1e-6)).status == YoungLaplaceStatus::above_rupture);
+}
+
+TEST_CASE("Sphere-plane at theta = 40 deg solves right up to the end of its piece, the force falling all the way",
+          "[bridge][sphere-plane]") {
+    // Near the piece's end φ only just reaches the plate's angle at its maximum; a step that passed
+    // over that maximum used to leave a quarter of the necks there without a shape (100 of 400
+    // sampled), and solves failed.
+    for (double vhat : {1e-5, 0.05544}) {
+        const auto b = YoungLaplaceBridge::sphere_plane(vhat, deg(40), deg(40));
+        REQUIRE(b.family_ok());
+        INFO("V^ = " << vhat);
+        double previous = INFINITY;
+        for (double rest : {1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 1e-6, 1e-7, 1e-8, 0.0}) {
+            const auto r = b.solve((1 - rest) * b.hhat_rupture());
+            INFO("1 - h^/h^_c = " << rest << ": " << r.message);
+            REQUIRE(r.ok());
+            CHECK(r.shape.fhat_neck < previous);
+            previous = r.shape.fhat_neck;
+        }
+    }
+}
