@@ -134,8 +134,9 @@ int run_bridge_error(const Options& o) {
     return 0;
 }
 
-// Cost of each optional contact law (issue #4): the scene is filled and settled once, then the
-// lift-and-spread phase runs from that same settled fill, dry, wet and with SJKR adhesion, under each rolling law
+// Cost of each optional contact law: the scene is filled and settled once, then the lift-and-spread
+// phase runs from that same settled fill, dry, wet (Mikami's fit, and the exact bridge tabulated)
+// and with SJKR adhesion, under each rolling law
 // (each its own compiled engine), for the whole spread time (no stop at rest, so every row steps
 // equally). EPSD runs also with Ai's rolling dashpot (η_r = 0.3), and with the energy ledger.
 int run_dem_bench(const Options& o) {
@@ -152,7 +153,7 @@ int run_dem_bench(const Options& o) {
                   {"settled as", scene.wet ? "wet (the scene's own laws)" : "dry (the scene's own laws)"},
                   {"threads", std::to_string(omp_get_max_threads())}};
     t.columns = {"laws", "particles", "steps", "wall_s", "particle_steps_per_s", "cost_vs_dry_same_rolling",
-                 "cost_vs_dry_free_rolling"};
+                 "cost_vs_dry_free_rolling", "cost_vs_mikami_same_rolling"};
     struct Combination {
         const char* rolling;
         bool ledger;
@@ -160,16 +161,18 @@ int run_dem_bench(const Options& o) {
     };
     const Combination combinations[] = {{"", false, 0},       {"+epsd", false, 0}, {"+epsd", false, 0.3},
                                         {"+epsd2", false, 0}, {"+cdt", false, 0},  {"+epsd", true, 0}};
-    // Cohesion: none, the Mikami bridge, SJKR adhesion (the scene's k, else 2e4 J/m³).
-    enum class Cohesion { dry, mikami, sjkr };
+    // Cohesion: none, the Mikami bridge, the exact bridge tabulated (bridge_variant = "table"), SJKR
+    // adhesion (the scene's k, else 2e4 J/m³).
+    enum class Cohesion { dry, mikami, exact, sjkr };
     const double k_sjkr = scene.cohesion_energy_density > 0 ? scene.cohesion_energy_density : 2e4;
-    std::vector<double> dry_rate(std::size(combinations));
-    for (const Cohesion cohesion : {Cohesion::dry, Cohesion::mikami, Cohesion::sjkr})
+    std::vector<double> dry_rate(std::size(combinations)), mikami_rate(std::size(combinations));
+    for (const Cohesion cohesion : {Cohesion::dry, Cohesion::mikami, Cohesion::exact, Cohesion::sjkr})
         for (std::size_t n = 0; n < std::size(combinations); ++n) {
             const std::string rolling = combinations[n].rolling;
-            const bool wet = cohesion == Cohesion::mikami;
+            const bool wet = cohesion == Cohesion::mikami || cohesion == Cohesion::exact;
             auto s = scene;
             s.wet = wet;
+            s.particle_curve = cohesion == Cohesion::exact ? bridge::CurveSource::exact : bridge::CurveSource::fit;
             s.cohesion_energy_density = cohesion == Cohesion::sjkr ? k_sjkr : 0;
             s.rolling_resistance = !rolling.empty();
             s.rolling_model = rolling == "+cdt"     ? slump::RollingModel::constant_torque
@@ -182,14 +185,15 @@ int run_dem_bench(const Options& o) {
             const auto r = slump::run_slump(s, {}, false, phases);
             const double rate = double(r.particles) * double(r.steps) / r.wall_s;
             if (cohesion == Cohesion::dry) dry_rate[n] = rate;
+            if (cohesion == Cohesion::mikami) mikami_rate[n] = rate;
             const std::string dashpot = combinations[n].rolling_damping > 0 ? " dashpot eta_r=" + format_number(combinations[n].rolling_damping) : "";
-            const char* laws = cohesion == Cohesion::mikami ? "hertz+mindlin+mikami"
-                               : cohesion == Cohesion::sjkr ? "hertz+mindlin+sjkr"
-                                                            : "hertz+mindlin";
-            t.rows.push_back({std::string(laws) + rolling + dashpot +
-                                  (combinations[n].ledger ? " +energy ledger" : ""),
-                              double(r.particles), double(r.steps), r.wall_s, rate, dry_rate[n] / rate,
-                              dry_rate[0] / rate});
+            const char* laws = cohesion == Cohesion::mikami  ? "hertz+mindlin+mikami"
+                               : cohesion == Cohesion::exact ? "hertz+mindlin+exact-table"
+                               : cohesion == Cohesion::sjkr  ? "hertz+mindlin+sjkr"
+                                                             : "hertz+mindlin";
+            t.rows.push_back({std::string(laws) + rolling + dashpot + (combinations[n].ledger ? " +energy ledger" : ""),
+                              double(r.particles), double(r.steps), r.wall_s, rate, dry_rate[n] / rate, dry_rate[0] / rate,
+                              wet ? io::Cell(mikami_rate[n] / rate) : io::Cell(std::string("-"))});
         }
     std::cout << io::render(t, io::parse_format(o.format, "--format"));
     return 0;

@@ -16,6 +16,7 @@
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
 #include "slump/coarse_grain.hpp"
+#include "slump/scene_bridges.hpp"
 #include "slump/slump_files.hpp"
 
 namespace demscale::cli {
@@ -118,6 +119,8 @@ int run_slump_command(const Options& o) {
     j["wall_s"] = r.wall_s;
     j["particle_steps_per_s"] = r.particle_steps() / r.wall_s;  // pour included, as in wall_s
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
+    j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
+    j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
     j["pour_time_s"] = r.pour_time;
     j["fill_solid_fraction"] = r.fill.solid_fraction;
     j["fill_core_fraction"] = r.fill.core_points > 0 ? nlohmann::ordered_json(r.fill.core_fraction) : nlohmann::ordered_json();

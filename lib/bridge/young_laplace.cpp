@@ -82,11 +82,11 @@ namespace {
 // Where one step of the meridian leaves it: still going, at the event (pin it), or no shape.
 enum class Step { on, reached, no_shape };
 
-// Integrates the meridian from the neck (r₀, z = 0, φ = 0) with adaptive steps (rk8pd) until
+// Integrates the meridian from `start` (the neck: r₀, z = 0, φ = 0) with adaptive steps (rk8pd) until
 // `step_end(prev, y, s)` says the event lies in the last step, then pins the event, e(y) = 0 with
 // de/ds = `slope(y)`, by safeguarded Newton in arc length to |e| ≤ 1e-15·scale.
 template <class StepEnd, class Event, class Slope>
-std::optional<State> integrate_to(gsl_odeiv2_system& sys, double r0, double h, const YoungLaplaceTolerance& tol, StepEnd step_end,
+std::optional<State> integrate_to(gsl_odeiv2_system& sys, const State& start, double h, const YoungLaplaceTolerance& tol, StepEnd step_end,
                                   Event event, Slope slope, double scale) {
     using StepPtr = std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)>;
     using Control = std::unique_ptr<gsl_odeiv2_control, decltype(&gsl_odeiv2_control_free)>;
@@ -95,7 +95,7 @@ std::optional<State> integrate_to(gsl_odeiv2_system& sys, double r0, double h, c
     Control control(gsl_odeiv2_control_y_new(tol.ode, tol.ode), gsl_odeiv2_control_free);
     Evolve evolve(gsl_odeiv2_evolve_alloc(sys.dimension), gsl_odeiv2_evolve_free);
     const double s_max = 20.0;  // a pendular meniscus between unit spheres is far shorter
-    State prev{r0, 0, 0, 0, 0}, y = prev;
+    State prev = start, y = prev;
     double s_prev = 0, s = 0;
     for (int n = 0;; ++n) {
         prev = y;
@@ -142,7 +142,7 @@ std::optional<BridgeShape> integrate_meniscus(double beta, double r0, double the
     // The profile turned back toward the axis (a bulge) or curled over: no concave bridge here.
     auto bulges = [](const State& y, bool too_long) { return too_long || !(y[0] > 0) || y[2] <= 0 || y[2] >= pi; };
     const auto end = integrate_to(
-        sys, r0, 1e-3 * (rc - r0), tol,
+        sys, State{r0, 0, 0, 0, 0}, 1e-3 * (rc - r0), tol,
         [&](const State&, const State& y, bool too_long) { return y[0] >= rc ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on; },
         [&](const State& y) { return y[0] - rc; }, [](const State& y) { return std::sin(y[2]); }, rc);
     if (!end) return std::nullopt;
@@ -166,7 +166,7 @@ std::optional<BridgeShape> integrate_meniscus(double beta, double r0, double the
     // dφ/ds = 0, and a foot pinned where φ turned back short of the plate's angle has no shape.
     const auto rising = [&](const State& y) { return std::cos(y[2]) / y[0] - kappa; };  // dφ/ds
     const auto foot = integrate_to(
-        sys, r0, 1e-3 * (rc - r0), tol,
+        sys, State{r0, 0, 0, 0, 0}, 1e-3 * (rc - r0), tol,
         [&](const State&, const State& y, bool too_long) {
             return y[2] >= phi_plate || rising(y) <= 0 ? Step::reached : bulges(y, too_long) ? Step::no_shape : Step::on;
         },

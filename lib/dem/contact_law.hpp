@@ -1,5 +1,5 @@
 // A contact law composed from one normal law and optional tangential, cohesion and rolling laws,
-// fixed at compile time: ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>.
+// fixed at compile time: ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>.
 // An "off" part (TangentialNone, CohesionNone, RollingNone) has no state and compiles to nothing in
 // the force loop, so a dry scene pays nothing for liquid bridges. Call order: normal → cohesion →
 // tangential → rolling.

@@ -4,7 +4,7 @@
 // protocol.
 #pragma once
 
-#include "bridge/mikami.hpp"
+#include "bridge/bridge_curve.hpp"
 #include "dem/material.hpp"
 #include "similarity/particle_replacement.hpp"
 
@@ -20,9 +20,11 @@ struct ContactSettings {
     bool rolling_resistance = true;
     RollingModel rolling_model = RollingModel::epsd;
     bool wet = true;          // liquid bridges between particles
-    bool wet_walls = false;   // and to the walls (Mikami's sphere–wall fit, unverified)
+    bool wet_walls = false;   // and to the walls
     similarity::Liquid liquid;
-    bridge::MikamiOptions bridge;
+    bridge::MikamiOptions bridge;  // the fit's printed form and rupture law (particle_curve = fit)
+    bridge::CurveSource particle_curve = bridge::CurveSource::fit;  // bridge_variant = "table": exact
+    bridge::CurveSource wall_curve = bridge::CurveSource::exact;    // wall_bridge = "mikami1998": fit
     double viscosity_pa_s = 0;    // the liquid's μ for the bridge's viscous part; 0: static bridge only
     double min_gap_ratio = 0.01;  // s_min / R, the roughness gap of touching surfaces (viscous part)
     double cohesion_energy_density = 0;  // k_c, J/m³, of the simplified JKR adhesion (dry scenes); 0: none

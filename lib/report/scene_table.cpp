@@ -22,10 +22,13 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
                               : s.rolling_model == slump::RollingModel::epsd2        ? "epsd2 (k_r = k_t R*^2)"
                               : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"
                                                                                        : "epsd (Ai's model C, with dashpot)");
-    say("bridge model", s.wet ? std::string(bridge::to_string(s.bridge.variant)) + ", rupture " +
-                                    std::string(bridge::to_string(s.bridge.rupture))
-                              : "none (dry)");
-    say("bridges to the floor and cone", s.wet_walls ? "yes" : "no");
+    const bool exact = s.particle_curve == bridge::CurveSource::exact;
+    say("bridge model", !s.wet  ? "none (dry)"
+                        : exact ? "table (the exact Young-Laplace bridge at the scene's V^ and theta)"
+                                : std::string(bridge::to_string(s.bridge.variant)) + ", rupture " + std::string(bridge::to_string(s.bridge.rupture)));
+    say("bridges to the floor and cone", !s.wet_walls                                 ? "no"
+                                         : s.wall_curve == bridge::CurveSource::exact ? "yes, the exact sphere-plane bridge (table)"
+                                                                                      : "yes, Mikami's sphere-wall fit (mikami1998)");
     // Each part that acts, with its parameters as its table states them.
     for (const auto& part : parts)
         if (part.active(s))

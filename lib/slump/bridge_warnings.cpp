@@ -4,6 +4,7 @@
 #include "bridge/validity.hpp"
 #include "bridge/young_laplace.hpp"
 #include "core/input_error.hpp"
+#include "slump/scene_bridges.hpp"
 
 namespace demscale::slump {
 
@@ -12,9 +13,16 @@ std::vector<std::string> bridge_warnings(const SlumpScene& s) {
     if (!s.wet) return out;
     const double vhat = bridge_vhat(s);
     const ContactAngle theta = s.liquid.contact_angle;
-    for (const auto& w : bridge::check_validity(vhat, theta, bridge::mikami_coefficients(vhat, theta, s.bridge)))
-        out.push_back("particle-particle bridges (" + std::string(bridge::to_string(s.bridge.variant)) + "): " + w.message);
+    // An exact curve has no fitted range; solving it here refuses a scene where it has no bridge.
+    if (s.particle_curve == bridge::CurveSource::exact) particle_bridge_curve(s);
+    else
+        for (const auto& w : bridge::check_validity(vhat, theta, bridge::mikami_coefficients(vhat, theta, s.bridge)))
+            out.push_back("particle-particle bridges (" + bridge_variant_name(s) + "): " + w.message);
     if (!s.wet_walls) return out;
+    if (s.wall_curve == bridge::CurveSource::exact) {
+        wall_bridge_curve(s);
+        return out;
+    }
     const auto wall = bridge::mikami_coefficients(vhat, theta, s.bridge, bridge::BridgeGeometry::sphere_wall);
     for (const auto& w : bridge::check_validity(vhat, theta, wall)) out.push_back("particle-wall bridges (Mikami's sphere-wall fit): " + w.message);
     const auto exact = bridge::YoungLaplaceBridge::sphere_plane(vhat, theta, theta).solve(0.0);

@@ -37,6 +37,10 @@ std::string canonical(const SlumpScene& s, std::span<const dem::LawPart> parts) 
     add("rolling", s.rolling_resistance), add("rolling_model", static_cast<double>(s.rolling_model));
     add("wet", s.wet), add("wet_walls", s.wet_walls);
     if (s.wet) add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
+    // The exact curves (added after format 5): a line only where one acts, so the keys of fitted
+    // scenes stay as they were.
+    if (s.wet && s.particle_curve == bridge::CurveSource::exact) add("particle_curve_exact", 1);
+    if (s.wet && s.wet_walls && s.wall_curve == bridge::CurveSource::exact) add("wall_curve_exact", 1);
     for (const auto& part : parts)
         if (part.active(s))
             for (const auto& p : part.parameters) add(p.key, p.get(s));

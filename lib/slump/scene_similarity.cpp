@@ -4,6 +4,7 @@
 
 #include "core/input_error.hpp"
 #include "dem/law_parts.hpp"
+#include "slump/scene_bridges.hpp"
 
 namespace demscale::slump {
 
@@ -39,8 +40,9 @@ std::vector<std::string> differing_inputs(const io::TableConfig& c, const SlumpS
     dem::ContactSettings configured;
     configured.liquid = c.liquid;
     for (const auto& p : dem::bridge_parameters) compare(std::string(p.key), std::string(p.key), p.get(configured), p.get(s), 1);
-    compare_name("bridge.variant", "liquid.bridge_variant", bridge::to_string(c.bridge.variant), bridge::to_string(s.bridge.variant));
-    compare_name("bridge.rupture", "liquid.rupture", bridge::to_string(c.bridge.rupture), bridge::to_string(s.bridge.rupture));
+    compare_name("bridge.variant", "liquid.bridge_variant", bridge::to_string(c.bridge.variant), bridge_variant_name(s));
+    if (s.particle_curve == bridge::CurveSource::fit)  // the exact bridge has its own rupture
+        compare_name("bridge.rupture", "liquid.rupture", bridge::to_string(c.bridge.rupture), bridge::to_string(s.bridge.rupture));
     return out;
 }
 

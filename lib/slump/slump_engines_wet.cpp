@@ -4,7 +4,7 @@
 
 namespace demscale::slump::protocol {
 
-template SlumpResult run_protocol<CohesionMikamiBridge>(const SlumpScene&, CohesionMikamiBridge, Particles, bool, const std::function<void(const SlumpProgress&)>&,
+template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, CohesionLiquidBridge, Particles, bool, const std::function<void(const SlumpProgress&)>&,
                                          const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

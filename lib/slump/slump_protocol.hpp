@@ -234,7 +234,7 @@ SlumpResult run_protocol(const SlumpScene& s, Cohesion cohesion, Particles parti
 // Built in slump_engines_*.cpp, one file each.
 extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, CohesionNone, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
-extern template SlumpResult run_protocol<CohesionMikamiBridge>(const SlumpScene&, CohesionMikamiBridge, Particles, bool,
+extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, CohesionLiquidBridge, Particles, bool,
                                                                const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, CohesionSjkr, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);

@@ -4,6 +4,7 @@
 
 #include "dem/law_parts.hpp"
 #include "dem/time_step.hpp"
+#include "slump/scene_bridges.hpp"
 #include "slump/slump_protocol.hpp"
 
 namespace demscale::slump {
@@ -13,15 +14,11 @@ namespace {
 using namespace dem;
 
 // The wet law's bridge: liquid per bridge from Eq. 5 with the particle mass, the same V̂ for every
-// pair; largest_radius sets the range (the scene's R for its own fills).
-template <class Bridge>
-Bridge bridge_for(const SlumpScene& s, double largest_radius) {
-    const double vhat = bridge_vhat(s);
-    Bridge c{bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge), largest_radius,
-             s.liquid.surface_tension_n_per_m, std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
-    if (s.wet_walls)
-        c.wall = bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge, bridge::BridgeGeometry::sphere_wall);
-    return c;
+// pair (its curves: slump/scene_bridges.hpp); largest_radius sets the range (the scene's R for its
+// own fills).
+CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius) {
+    return {particle_bridge_curve(s), largest_radius, s.liquid.surface_tension_n_per_m,
+            s.wet_walls ? std::optional(wall_bridge_curve(s)) : std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
 }
 
 }  // namespace
@@ -55,14 +52,14 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     SlumpResult res;
     // The protocol's own fills are monodisperse. A wet start state with unequal radii (another
     // engine's fill) is refused rather than bridged with one R: the per-pair bridge
-    // (CohesionMikamiBridgePerPair) would double the compiled wet engines, for no shipped scene.
+    // (CohesionLiquidBridgePerPair) would double the compiled wet engines, for no shipped scene.
     const auto [smallest, largest] = std::minmax_element(particles.radius.begin(), particles.radius.end());
     if (s.wet && smallest != particles.radius.end() && *smallest != *largest)
         throw InputError("--start", "radii from " + format_short(*smallest * 1e3) + " to " + format_short(*largest * 1e3) + " mm",
                          "spheres of one radius for a wet scene (equal-sphere bridges; docs/models/liquid-bridge.md)");
     // One explicit choice of the cohesion law; the rolling law and the ledger are chosen inside.
     using protocol::run_protocol;
-    res = s.wet                 ? run_protocol(s, bridge_for<CohesionMikamiBridge>(s, s.radius_m), std::move(particles), pour, progress, phases)
+    res = s.wet                 ? run_protocol(s, scene_bridge(s, s.radius_m), std::move(particles), pour, progress, phases)
           : sjkr_part.active(s) ? run_protocol(s, CohesionSjkr{s.cohesion_energy_density}, std::move(particles), pour, progress, phases)
                                 : run_protocol(s, CohesionNone{}, std::move(particles), pour, progress, phases);
     res.energy_ledger = phases.energy_ledger;

@@ -21,7 +21,7 @@ std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<cons
         {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed", "fill"}},
         {"floor", {"rough", "rough_diameter_mm"}},
         {"contact", {"rolling_resistance", "rolling_model"}},
-        {"liquid", {"wet", "wet_walls", "bridge_variant", "rupture"}},
+        {"liquid", {"wet", "wet_walls", "bridge_variant", "wall_bridge", "rupture"}},
         {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s",
                  "rest_duration_s", "rest_quantile", "skin_mm"}},
         {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
@@ -89,8 +89,16 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     }
     s.wet = r.boolean("liquid.wet").value_or(true);
     s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);
-    if (auto v = r.text("liquid.bridge_variant"))
-        r.check("liquid.bridge_variant", [&] { s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant"); });
+    if (auto v = r.text("liquid.bridge_variant")) {
+        if (*v == "table") s.particle_curve = bridge::CurveSource::exact;
+        else if (*v == "mikami1998" || *v == "yun-park-2017") s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant");
+        else throw InputError(r.where("liquid.bridge_variant", "liquid.bridge_variant"), "\"" + *v + "\"", "one of mikami1998, yun-park-2017, table");
+    }
+    if (auto v = r.text("liquid.wall_bridge")) {
+        if (*v == "table") s.wall_curve = bridge::CurveSource::exact;
+        else if (*v == "mikami1998") s.wall_curve = bridge::CurveSource::fit;
+        else throw InputError(r.where("liquid.wall_bridge", "liquid.wall_bridge"), "\"" + *v + "\"", "one of table, mikami1998");
+    }
     if (auto v = r.text("liquid.rupture"))
         r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });
     for (const auto& part : parts)

@@ -121,6 +121,15 @@ case $class in
     scene_commands 'scene.toml:2: liquid.moisture_content = 1: accepted \(0, 1\)' "$work/scene.toml"
     scene '[liquid]' 'contact_angle_deg = 90'
     scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) deg' "$work/scene.toml"
+    scene '[liquid]' 'bridge_variant = "exact"'
+    scene_commands 'scene.toml:2: liquid.bridge_variant = "exact": accepted one of mikami1998, yun-park-2017, table' "$work/scene.toml" no-pile
+    scene '[liquid]' 'wall_bridge = "fit"'
+    scene_commands 'scene.toml:2: liquid.wall_bridge = "fit": accepted one of table, mikami1998' "$work/scene.toml" no-pile
+    # The exact bridges exist only where the solver finds a concave one (the default wall law too).
+    scene '[liquid]' 'bridge_variant = "table"' 'contact_angle_deg = 85'
+    scene_commands 'scene.toml: liquid.bridge_variant = "table" at V\^ = 0.05556, theta = 85 deg: accepted .*concave bridge, or bridge_variant = "mikami1998"' "$work/scene.toml" no-pile
+    scene '[liquid]' 'wet_walls = true' 'contact_angle_deg = 85'
+    scene_commands 'scene.toml: liquid.wall_bridge = "table" at .*: accepted .*concave bridge, or wall_bridge = "mikami1998"' "$work/scene.toml" no-pile
     scene '[contact]' 'rolling_model = "sideways"'
     scene_commands 'scene.toml:2: contact.rolling_model = sideways: accepted "epsd", "epsd2" or "constant_torque"' "$work/scene.toml"
     scene '[contact]' 'rolling_damping = 1.5'

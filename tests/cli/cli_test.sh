@@ -194,6 +194,18 @@ case $case_name in
     err=$(grep '"energy_balance_error"' "$work/out" | sed 's/.*: *//; s/,//')
     awk -v e="$err" 'BEGIN { exit !(e < 0.03 && e > -0.03) }' || fail "energy balance error $err"
     head -2 "$work/e/slump_history.csv" | grep -q 'lost_friction_j,lost_rolling_j,lost_bridges_j' || fail "history lacks the ledger" ;;
+  slump_exact_bridges)
+    # Exact (tabulated) bridges between spheres and to wet walls: the run names both laws and warns
+    # of nothing; with Mikami's wall fit chosen instead it warns of its excess over the exact bridge.
+    { cat "$src/data/scenes/small_wet.toml"; printf '[liquid]\nbridge_variant = "table"\nwet_walls = true\n'; } >"$work/exact.toml"
+    expect 0 '"bridge_law": "table"' -- "$demscale" slump --scene "$work/exact.toml" --format json --no-png --out "$work/x"
+    grep -q '"wall_bridge_law": "table"' "$work/out" || fail "wall law not named"
+    grep -q '"bridge_warnings": \[\]' "$work/out" || fail "warnings for exact bridges"
+    grep -q '"final_height_mm"' "$work/out" || fail "no result"
+    sed -i 's/^wet_walls = true/wet_walls = true\nwall_bridge = "mikami1998"/' "$work/exact.toml"
+    "$demscale" slump --scene "$work/exact.toml" --format json --no-png --out "$work/y" >"$work/fit.json" 2>"$work/fit.err" || fail "fit walls failed"
+    grep -q '"wall_bridge_law": "mikami1998"' "$work/fit.json" || fail "fit wall law not named"
+    grep -q "warning: particle-wall bridges: Mikami's sphere-wall fit pulls" "$work/fit.err" || fail "no wall-fit warning" ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"

@@ -150,22 +150,33 @@ TEST_CASE("Energy ledger balances for a dry column collapsing from a lifted tube
 }
 
 TEST_CASE("Energy ledger balances for a wet column collapsing from a lifted tube", "[dem][energy][bridge][slow]") {
-    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
     const double vhat = 0.05544;  // Eq. 5 at 4.5 % moisture (docs/model.md)
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
     const auto wall = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
-    check_ledger(Law(material(0.5, 0.1), CohesionMikamiBridge{k, r, 0.074, wall}), "wet", true);
+    check_ledger(Law(material(0.5, 0.1), CohesionLiquidBridge{k, r, 0.074, wall}), "wet", true);
+}
+
+TEST_CASE("Energy ledger balances for a wet column on exact (tabulated) bridges to spheres and walls", "[dem][energy][bridge][curve][slow]") {
+    // The tabulated curve's potential is its own interpolant integrated (Gauss-Legendre per
+    // segment): a mismatch with the force it applies would leave a drift that does not shrink with dt.
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
+    const double vhat = 0.05544;
+    const ContactAngle theta{Degrees{20}};
+    const auto k = bridge::BridgeCurve::exact(vhat, theta, bridge::BridgeGeometry::sphere_sphere);
+    const auto wall = bridge::BridgeCurve::exact(vhat, theta, bridge::BridgeGeometry::sphere_wall);
+    check_ledger(Law(material(0.5, 0.1), CohesionLiquidBridge{k, r, 0.074, wall}), "exact wet", true);
 }
 
 TEST_CASE("Energy ledger balances for a viscous wet column: the bridge's lubrication is booked as lost",
           "[dem][energy][bridge][viscous][slow]") {
     // μ = 0.05 Pa s (a light oil, 50× water) so that lubrication is a large share of the loss: a
     // normal or tangential part booked wrongly would leave a drift that does not shrink with dt.
-    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
     const double vhat = 0.05544;
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
     const auto wall = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
-    check_ledger(Law(material(0.5, 0.1), CohesionMikamiBridge{k, r, 0.074, wall, 0.05, 0.01 * r}), "viscous wet", true);
+    check_ledger(Law(material(0.5, 0.1), CohesionLiquidBridge{k, r, 0.074, wall, 0.05, 0.01 * r}), "viscous wet", true);
 }
 
 TEST_CASE("Energy ledger balances for an adhesive (SJKR) column: the adhesion stores, never loses", "[dem][energy][adhesion][slow]") {

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "bridge/mikami.hpp"
+#include "bridge/young_laplace.hpp"
 #include "dem/simulation.hpp"
 
 using namespace demscale;
@@ -131,11 +132,11 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     const double r = 1e-3, gamma = 0.074, vhat = 0.05544;
     Material m;
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
-    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridge>;
     Particles p;
     p.add({0, 0, 0}, r, 2200);
     p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
-    Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
+    Simulation sim(p, Wet(m, CohesionLiquidBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r);
     // The list reaches only the skin: held at 0.1-0.3 R the bridge lies beyond it, so it is the
     // engine that keeps the bridged pair listed across the rebuilds these moves cause.
     CHECK(sim.neighbors().cutoff_gap() < 0.3 * r);
@@ -168,11 +169,11 @@ TEST_CASE("Unequal spheres: the bridge takes the harmonic-mean radius 2 R1 R2 / 
     // here 1 mm and 2 mm give R = 4/3 mm, the gap measured in that R.
     const double r1 = 1e-3, r2 = 2e-3, rh = 2 * r1 * r2 / (r1 + r2), gamma = 0.074;
     const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
-    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridgePerPair>;
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridgePerPair>;
     Particles p;
     p.add({0, 0, 0}, r1, 2200);
     p.add({r1 + r2, 0, 0}, r2, 2200);  // touching: the bridge forms
-    Simulation sim(p, Wet(Material{}, CohesionMikamiBridgePerPair{k, r2, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r1);
+    Simulation sim(p, Wet(Material{}, CohesionLiquidBridgePerPair{k, r2, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r1);
     for (double hhat : {0.0, 0.05, 0.2}) {
         INFO("gap / R = " << hhat);
         sim.particles().position[1] = Vec3(r1 + r2 + hhat * rh, 0, 0);
@@ -184,14 +185,53 @@ TEST_CASE("Unequal spheres: the bridge takes the harmonic-mean radius 2 R1 R2 / 
     CHECK(sim.particles().force[0].x() == 0.0);
 }
 
+TEST_CASE("Exact (tabulated) bridges in the engine: the Young-Laplace force between spheres and to a floor, rupture at the exact gap",
+          "[dem][bridge][curve]") {
+    const double r = 1e-3, gamma = 0.074, vhat = 0.05544;
+    const ContactAngle theta{Degrees{20}};
+    const auto pair_curve = bridge::BridgeCurve::exact(vhat, theta, bridge::BridgeGeometry::sphere_sphere);
+    const auto wall_curve = bridge::BridgeCurve::exact(vhat, theta, bridge::BridgeGeometry::sphere_wall);
+    const bridge::YoungLaplaceBridge spheres(vhat, theta);
+    const auto plate = bridge::YoungLaplaceBridge::sphere_plane(vhat, theta, theta);
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridge>;
+    Particles p;
+    p.add({0, 0, r}, r, 2200);
+    p.add({2 * r, 0, r}, r, 2200);  // touching each other and the floor: both bridges form
+    const std::vector<Wall> floor{PlaneWall{Vec3::Zero(), Vec3::UnitZ()}};
+    Simulation sim(p, Wet(Material{}, CohesionLiquidBridge{pair_curve, r, gamma, wall_curve}), floor, Vec3::Zero(), 1e-6, 0.1 * r);
+    auto exact_force = [&](const bridge::YoungLaplaceBridge& b, double hhat) {
+        const auto s = b.solve(hhat);
+        REQUIRE(s.ok());
+        return 2 * M_PI * r * gamma * s.shape.fhat_neck;  // F/(2πRγ) of the solver, N
+    };
+    for (double x : {0.05, 0.5, 0.95}) {
+        INFO("gap / rupture gap = " << x);
+        // Sphere 0 above the floor at a gap, sphere 1 at a gap from sphere 0 and far above the floor.
+        const double floor_gap = x * plate.hhat_rupture(), pair_gap = x * spheres.hhat_rupture();
+        sim.particles().position[0] = Vec3(0, 0, r + floor_gap * r);
+        sim.particles().position[1] = sim.particles().position[0] + (2 + pair_gap) * r * Vec3(1, 0, 0.6).normalized();
+        sim.refresh_forces();
+        const Vec3 along = Vec3(1, 0, 0.6).normalized();
+        const Vec3 on_1 = sim.particles().force[1];
+        CHECK(-on_1.dot(along) == Approx(exact_force(spheres, pair_gap)).epsilon(5e-4));
+        const Vec3 on_0 = sim.particles().force[0] + on_1;  // the floor's pull alone (the pair's cancels)
+        CHECK(-on_0.z() == Approx(exact_force(plate, floor_gap)).epsilon(5e-4));
+    }
+    sim.particles().position[0] = Vec3(0, 0, r + 1.001 * plate.hhat_rupture() * r);
+    sim.particles().position[1] = sim.particles().position[0] + (2 + 1.001 * spheres.hhat_rupture()) * r * Vec3(1, 0, 0.6).normalized();
+    sim.refresh_forces();
+    CHECK(sim.particles().force[0].norm() == 0.0);  // both ruptured
+    CHECK(sim.particles().force[1].norm() == 0.0);
+}
+
 TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, across a gap and at contact, booked as lost",
           "[dem][bridge][viscous]") {
     const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01;
     const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
-    const CohesionMikamiBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
+    const CohesionLiquidBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
     const double rstar = r / 2;  // equal spheres
     SECTION("the law at a fixed gap and speed, and its loss") {
-        CohesionMikamiBridge::State a, b;
+        CohesionLiquidBridge::State a, b;
         Dissipation la, lb;
         still.pull(0.0, r, 0.0, 1e-6, false, a, la), viscous.pull(0.0, r, 0.0, 1e-6, false, b, lb);  // contact: bridges form
         for (double gap_hat : {0.0, 0.001, 0.05, 0.2}) {
@@ -210,7 +250,7 @@ TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, a
         CHECK(viscous.pull(-0.1 * r, r, v, 1e-6, false, b, lb) == 0.0);  // no bridge until contact again
     }
     SECTION("in the engine: a bridged pair separating across a gap feels capillary plus lubrication") {
-        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridge>;
         Particles p;
         p.add({0, 0, 0}, r, 2200);
         p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
@@ -228,14 +268,14 @@ TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) 
           "[dem][bridge][viscous]") {
     const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01, dt = 1e-6;
     const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
-    const CohesionMikamiBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
+    const CohesionLiquidBridge still{k, r, gamma, std::nullopt}, viscous{k, r, gamma, std::nullopt, mu, s_min};
     const double rstar = r / 2;
     // Goldman, Cox & Brenner (1967): a sphere sliding parallel to a plane at gap s << R.
     auto by_hand = [&](double gap) {
         return 6 * M_PI * mu * rstar * (8.0 / 15.0 * std::log(rstar / std::max(gap, s_min)) + 0.9588);
     };
     SECTION("the law at a fixed gap and sliding speed, and its loss") {
-        CohesionMikamiBridge::State b, none;
+        CohesionLiquidBridge::State b, none;
         Dissipation lost;
         viscous.pull(0.0, r, 0.0, dt, false, b, lost);  // contact: the bridge forms
         const Vec3 sliding(0, v, 0.5 * v);
@@ -251,7 +291,7 @@ TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) 
         CHECK(still.drag(-0.05 * r, r, sliding, dt, false, b, lost) == Vec3::Zero());        // no viscosity: no drag
     }
     SECTION("in the engine: a bridged pair sliding and spinning across a gap") {
-        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+        using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridge>;
         Particles p;
         p.add({0, 0, 0}, r, 2200);
         p.add({2 * r, 0, 0}, r, 2200);  // touching: the bridge forms
@@ -278,11 +318,11 @@ TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) 
 TEST_CASE("A bridge stretched far beyond the list's reach pulls until it ruptures", "[dem][bridge][neighbors]") {
     const double r = 1e-3, gamma = 0.074, vhat = 0.05544, skin = 0.01 * r;
     const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
-    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionMikamiBridge>;
+    using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridge>;
     Particles p;
     p.add({0, 0, 0}, r, 2200, {-0.5, 0, 0});  // touching (the bridge forms), flying apart fast
     p.add({2 * r, 0, 0}, r, 2200, {0.5, 0, 0}); // enough to escape the bridge's pull
-    Simulation sim(p, Wet(Material{}, CohesionMikamiBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, skin);
+    Simulation sim(p, Wet(Material{}, CohesionLiquidBridge{k, r, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, skin);
     int stretched = 0, ruptured = 0;
     const std::size_t builds0 = sim.neighbors().builds();
     while (ruptured < 50) {
@@ -308,7 +348,7 @@ TEST_CASE("A wet scene's results do not depend on the neighbour skin, to the bit
     Material m;
     m.friction = 0.5;
     m.rolling_friction = 0.1;
-    using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionMikamiBridge, RollingEpsd>;
+    using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-0.3, 0.3);
     Particles p;
@@ -316,7 +356,7 @@ TEST_CASE("A wet scene's results do not depend on the neighbour skin, to the bit
         for (int b = 0; b < 5; ++b)
             for (int c = 0; c < 5; ++c) p.add(2.05 * r * Vec3(a, b, c), r, 2200, Vec3(u(rng), u(rng), u(rng)));
     auto run = [&](double skin) {
-        Simulation sim(p, Wet(m, CohesionMikamiBridge{k, r, 0.074, std::nullopt}), {}, Vec3::Zero(), 2e-6, skin);
+        Simulation sim(p, Wet(m, CohesionLiquidBridge{k, r, 0.074, std::nullopt}), {}, Vec3::Zero(), 2e-6, skin);
         double most_bridge_energy = 0;
         for (int n = 0; n < 4000; ++n) {
             sim.step();

@@ -221,7 +221,7 @@ TEST_CASE("A scene implies the similarity table's inputs, and a disagreeing conf
     CHECK(d[1].find("liquid.rupture = lian1993 in the scene") != std::string::npos);
 }
 
-TEST_CASE("A scene's bridge warnings: none for the default wet scene, the wall fit's excess over the exact bridge with wet walls",
+TEST_CASE("A scene's bridge warnings: none for the default wet scene, the wall fit's excess over the exact bridge with its wet walls",
           "[slump][bridge][validity]") {
     slump::SlumpScene s;  // wet, Mikami's published form, θ = 0: inside its range and bound
     CHECK(slump::bridge_warnings(s).empty());
@@ -229,6 +229,8 @@ TEST_CASE("A scene's bridge warnings: none for the default wet scene, the wall f
     s.wet_walls = true;
     CHECK(slump::bridge_warnings(s).empty());  // dry: no bridge at all
     s.wet = true;
+    CHECK(slump::bridge_warnings(s).empty());  // wet walls take the exact sphere-plane bridge by default
+    s.wall_curve = bridge::CurveSource::fit;
     // Mikami's wall fit exceeds the small-volume bound 4πRγ cos θ, and the exact sphere–plane
     // bridge (bridge-models.md: +37.6 % at contact at Table 1's V̂) by tens of percent.
     const auto w = slump::bridge_warnings(s);

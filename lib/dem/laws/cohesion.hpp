@@ -1,13 +1,14 @@
 // Cohesion laws.
 //  CohesionNone — dry: zero range, no state, no code in the force loop.
-//  CohesionMikamiBridge — static pendular liquid bridge (Mikami et al. 1998 via the bridge library):
-//    a bridge forms when two surfaces touch, pulls with F = force_scale·R·γ·F̂(ĥ) (ĥ = gap/R) while
-//    the gap stays below the rupture distance ĥ_c·R, and is gone until the surfaces touch again.
+//  CohesionLiquidBridge — static pendular liquid bridge: a bridge forms when two surfaces touch,
+//    pulls with F = force_scale·R·γ·F̂(ĥ) (ĥ = gap/R) while the gap stays below the rupture distance
+//    ĥ_c·R, and is gone until the surfaces touch again. F̂ is a bridge::BridgeCurve: Mikami et al.'s
+//    (1998) regression or the exact Young–Laplace bridge tabulated at the scene's V̂ and θ.
 //    R is the pair's harmonic-mean radius (unequal spheres as Mikami et al. 1998), V̂ the same for
-//    every pair; coefficients and F̂ at contact computed once: a touching pair costs no exp, one
-//    across a gap one.
-//    Walls use Mikami's sphere–wall coefficients when wet, no bridge when dry.
-//    Ledger: a bridge's potential is minus the work to pull it to rupture (Eq. 2 integrated); it
+//    every pair; F̂ at contact computed once: a touching pair costs nothing, one across a gap one
+//    curve evaluation.
+//    Walls take their own curve (sphere–plane) when wet, no bridge when dry.
+//    Ledger: a bridge's potential is minus the work to pull it to rupture (F̂ integrated); it
 //    appears at contact with that negative value, so each formation books the same amount as lost.
 //    Viscous part (optional, viscosity > 0): the normal lubrication force of a liquid bridge,
 //    F_v = 6π μ R*² v_n / s (Pitois, Moucheront & Chateau 2000, Eq. 3 for s ≪ R; the normal part
@@ -22,8 +23,9 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
-#include "bridge/mikami.hpp"
+#include "bridge/bridge_curve.hpp"
 #include "dem/contact_pair.hpp"
 #include "dem/law_part.hpp"
 #include "dem/energy.hpp"
@@ -49,29 +51,28 @@ struct CohesionNone {
 enum class BridgeRadius { common, per_pair };
 
 template <BridgeRadius Radius = BridgeRadius::common>
-struct MikamiBridge {
+struct LiquidBridge {
     struct State {
         bool bridged = false;
     };
     template <class Lost>
     using StateFor = State;
-    bridge::MikamiCoefficients k;                   // sphere–sphere
+    bridge::BridgeCurve k;                          // sphere–sphere
     double radius;                                  // the largest particle radius, m: sets the range
     double gamma;                                   // surface tension, N/m
-    std::optional<bridge::MikamiCoefficients> wall; // sphere–wall; nullopt: dry walls
+    std::optional<bridge::BridgeCurve> wall;        // sphere–wall; nullopt: dry walls
     double viscosity = 0;                           // μ of the liquid, Pa s; 0: no viscous part
     double min_gap = 0;                             // s_min, m (roughness: the gap of touching surfaces)
 
     // per_pair: each pair's bridge has R = its harmonic-mean radius 2 R_i R_j / (R_i + R_j) (R_i at
     // a wall; Mikami et al. 1998, Willett et al. 2000) and the same V̂ = V/R³: the liquid of Eq. 5
     // per bridge grows with the pair's mass. With equal radii both give the same bits.
-    MikamiBridge(bridge::MikamiCoefficients sphere, double radius_m, double gamma_n_per_m,
-                         std::optional<bridge::MikamiCoefficients> wall_coefficients, double viscosity_pa_s = 0,
-                         double min_gap_m = 0)
-        : k(sphere), radius(radius_m), gamma(gamma_n_per_m), wall(wall_coefficients), viscosity(viscosity_pa_s),
-          min_gap(min_gap_m), fhat0_(bridge::mikami_fhat(k, 0.0)), fhat0_wall_(wall ? bridge::mikami_fhat(*wall, 0.0) : 0.0),
-          touching_(k.force_scale * radius_m * gamma_n_per_m * fhat0_),
-          touching_wall_(wall ? wall->force_scale * radius_m * gamma_n_per_m * fhat0_wall_ : 0.0),
+    LiquidBridge(bridge::BridgeCurve sphere, double radius_m, double gamma_n_per_m, std::optional<bridge::BridgeCurve> wall_curve,
+                 double viscosity_pa_s = 0, double min_gap_m = 0)
+        : k(std::move(sphere)), radius(radius_m), gamma(gamma_n_per_m), wall(std::move(wall_curve)), viscosity(viscosity_pa_s),
+          min_gap(min_gap_m), fhat0_(k.fhat(0.0)), fhat0_wall_(wall ? wall->fhat(0.0) : 0.0),
+          touching_(k.force_scale() * radius_m * gamma_n_per_m * fhat0_),
+          touching_wall_(wall ? wall->force_scale() * radius_m * gamma_n_per_m * fhat0_wall_ : 0.0),
           drag_touching_(drag_coefficient(0.5 * radius_m, min_gap_m)), drag_touching_wall_(drag_coefficient(radius_m, min_gap_m)) {}
 
     // Whether the engine must give pull() and drag() the velocities of a pair across a gap.
@@ -87,7 +88,7 @@ struct MikamiBridge {
     bool holds(const State& s) const { return s.bridged; }
 
     // Range beyond contact over which a bridge still acts: the rupture gap, m.
-    double range() const { return std::max(k.hhat_rupture, wall ? wall->hhat_rupture : 0.0) * radius; }
+    double range() const { return std::max(k.hhat_rupture(), wall ? wall->hhat_rupture() : 0.0) * radius; }
 
     // Attractive force magnitude (N) along −n on particle i, at overlap δ (m, < 0 a gap) with a
     // sphere or a wall, r the pair's harmonic-mean radius (m), the pair separating at v_normal (m/s,
@@ -128,30 +129,30 @@ struct MikamiBridge {
     }
 
 private:
-    // The static bridge: Eqs. 1-2 (Mikami et al. 1998).
+    // The static bridge: Eq. 1 (Yun & Park 2017) with the curve's F̂.
     template <class Lost>
     DEMSCALE_HOT double static_pull(double overlap, double r, bool with_wall, State& s, Lost& lost) const {
         if (with_wall && !wall) return 0.0;
-        const bridge::MikamiCoefficients& law = with_wall ? *wall : k;
+        const bridge::BridgeCurve& law = with_wall ? *wall : k;
         if (overlap >= 0) {  // touching: a bridge forms if there was none, and pulls with F(ĥ = 0)
             if (!s.bridged) {
                 s.bridged = true;
                 lost.bridge -= potential(law, r, overlap);
             }
             if (Radius == BridgeRadius::common || r == radius) return with_wall ? touching_wall_ : touching_;
-            return law.force_scale * r * gamma * (with_wall ? fhat0_wall_ : fhat0_);
+            return law.force_scale() * r * gamma * (with_wall ? fhat0_wall_ : fhat0_);
         }
         if (!s.bridged) return 0.0;
         const double hhat = -overlap / r;
-        if (hhat > law.hhat_rupture) {  // ruptured: gone until the next contact
+        if (hhat > law.hhat_rupture()) {  // ruptured: gone until the next contact
             s.bridged = false;
             return 0.0;
         }
-        return law.force_scale * r * gamma * bridge::mikami_fhat(law, hhat);  // Eq. 1 with Eq. 2, N
+        return law.force_scale() * r * gamma * law.fhat(hhat);  // Eq. 1, N
     }
 
-    // F̂ at contact, computed once: F̂ holds its ĥ = 0 value under any overlap (mikami_fhat), so
-    // most of a wet pile's pairs, which touch, need no exp.
+    // F̂ at contact, computed once: F̂ holds its ĥ = 0 value under any overlap, so most of a wet
+    // pile's pairs, which touch, need no curve evaluation.
     double fhat0_, fhat0_wall_;
     double touching_, touching_wall_;  // the force at contact for r = radius, N
     double drag_touching_, drag_touching_wall_;  // drag_coefficient at s = s_min for r = radius, N s/m
@@ -163,13 +164,13 @@ private:
         return 6 * M_PI * viscosity * r_star * std::max(0.0, 8.0 / 15.0 * std::log(r_star / s) + 0.9588);
     }
 
-    double potential(const bridge::MikamiCoefficients& law, double r, double overlap) const {
-        return -law.force_scale * r * r * gamma * bridge::mikami_work_to_rupture(law, -overlap / r);
+    double potential(const bridge::BridgeCurve& law, double r, double overlap) const {
+        return -law.force_scale() * r * r * gamma * law.work_to_rupture(-overlap / r);
     }
 };
 
-using CohesionMikamiBridge = MikamiBridge<BridgeRadius::common>;
-using CohesionMikamiBridgePerPair = MikamiBridge<BridgeRadius::per_pair>;
+using CohesionLiquidBridge = LiquidBridge<BridgeRadius::common>;
+using CohesionLiquidBridgePerPair = LiquidBridge<BridgeRadius::per_pair>;
 
 // Parameters of the static bridge (docs/models/liquid-bridge.md): γ is the candidate of the
 // similarity (γ̄ = γ·S_f^k, Eq. 12); the liquid per bridge follows the particle mass (Eq. 5).

@@ -1,0 +1,99 @@
+// The DEM's bridge curves against independent routes: the tabulated exact curve against the exact
+// solver between its nodes, and its work to rupture against an adaptive quadrature of the solver's
+// forces.
+#include <catch2/catch.hpp>
+#include <gsl/gsl_integration.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+
+#include "bridge/bridge_curve.hpp"
+#include "bridge/young_laplace.hpp"
+
+using namespace demscale;
+using namespace demscale::bridge;
+
+namespace {
+ContactAngle deg(double d) { return ContactAngle{Degrees{d}}; }
+
+YoungLaplaceBridge family(double vhat, double theta, BridgeGeometry g) {
+    return g == BridgeGeometry::sphere_sphere ? YoungLaplaceBridge(vhat, deg(theta)) : YoungLaplaceBridge::sphere_plane(vhat, deg(theta), deg(theta));
+}
+
+// ∫ F̂ dĥ from a to b by GSL's adaptive QAGS on the exact solver itself.
+double solver_work(const YoungLaplaceBridge& b, double from, double to) {
+    std::function<double(double)> f = [&](double h) {
+        const auto r = b.solve(std::min(h, b.hhat_rupture()));
+        REQUIRE(r.ok());
+        return r.shape.fhat_neck;
+    };
+    gsl_function gf{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); }, &f};
+    std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> w(gsl_integration_workspace_alloc(200),
+                                                                                          gsl_integration_workspace_free);
+    double result = 0, error = 0;
+    gsl_integration_qags(&gf, from, to, 0, 1e-9, 200, w.get(), &result, &error);
+    return result;
+}
+}  // namespace
+
+TEST_CASE("The tabulated exact curve follows the exact solver between its nodes", "[bridge][curve]") {
+    for (auto g : {BridgeGeometry::sphere_sphere, BridgeGeometry::sphere_wall})
+        for (double vhat : {1e-4, 0.05544})
+            for (double theta : {0.0, 40.0}) {
+                INFO(to_string(g) << ", V^ = " << vhat << ", theta = " << theta);
+                const auto exact = family(vhat, theta, g);
+                const auto curve = BridgeCurve::exact(vhat, deg(theta), g);
+                CHECK(curve.tabulated());
+                CHECK(curve.hhat_rupture() == exact.hhat_rupture());
+                CHECK(curve.force_scale() == Approx(2 * M_PI).epsilon(1e-15));
+                double worst = 0;
+                // Midway between nodes in the gap coordinate, where a cubic is least accurate.
+                const int n = BridgeCurve::default_gap_points;
+                for (int i = 0; i + 1 < n; i += 3) {
+                    const double x = BridgeTable::gap_fraction((i + 0.5) / (n - 1));
+                    const auto r = exact.solve(x * exact.hhat_rupture());
+                    REQUIRE(r.ok());
+                    worst = std::max(worst, std::abs(curve.fhat(x * exact.hhat_rupture()) / r.shape.fhat_neck - 1));
+                }
+                CHECK(worst < 5e-4);
+                CHECK(curve.fhat(-0.01) == curve.fhat(0.0));  // an overlap counts as contact
+                CHECK(curve.fhat(exact.hhat_rupture() * (1 + 1e-9)) == 0.0);
+            }
+}
+
+TEST_CASE("The tabulated curve's work to rupture matches a quadrature of the exact solver", "[bridge][curve][slow]") {
+    for (auto g : {BridgeGeometry::sphere_sphere, BridgeGeometry::sphere_wall}) {
+        const double vhat = 0.05544, theta = 20;
+        INFO(to_string(g));
+        const auto exact = family(vhat, theta, g);
+        const auto curve = BridgeCurve::exact(vhat, deg(theta), g);
+        const double hc = exact.hhat_rupture();
+        for (double x : {0.0, 0.37, 0.9}) {
+            INFO("h^/h^_c = " << x);
+            CHECK(curve.work_to_rupture(x * hc) == Approx(solver_work(exact, x * hc, hc)).epsilon(2e-5));
+        }
+        CHECK(curve.work_to_rupture(-0.01) == Approx(curve.work_to_rupture(0) + 0.01 * curve.fhat(0)).epsilon(1e-13));
+        CHECK(curve.work_to_rupture(hc) == 0.0);
+    }
+}
+
+TEST_CASE("A Mikami fit as a curve is the fit itself", "[bridge][curve]") {
+    const auto k = mikami_coefficients(0.05544, deg(20));
+    const BridgeCurve curve = k;
+    CHECK_FALSE(curve.tabulated());
+    CHECK(curve.hhat_rupture() == k.hhat_rupture);
+    CHECK(curve.force_scale() == k.force_scale);
+    for (double h : {-0.01, 0.0, 0.1, 0.3, 0.5}) {
+        CHECK(curve.fhat(h) == mikami_fhat(k, h));
+        CHECK(curve.work_to_rupture(h) == mikami_work_to_rupture(k, h));
+    }
+}
+
+TEST_CASE("Exact sphere-plane columns solve at every node for theta 0-40 deg and V^ 1e-5-0.2", "[bridge][sphere-plane][curve][slow]") {
+    for (double vhat : {1e-5, 1e-3, 0.05544, 0.2})
+        for (double theta : {0.0, 10.0, 20.0, 30.0, 40.0}) {
+            INFO("V^ = " << vhat << ", theta = " << theta);
+            CHECK_NOTHROW(BridgeCurve::exact(vhat, deg(theta), BridgeGeometry::sphere_wall));
+        }
+}
