@@ -78,7 +78,7 @@ BridgeTable::Pair BridgeTable::solve_column(const YoungLaplaceBridge& bridge, in
     if (!bridge.family_ok()) throw std::runtime_error(bridge.family_message());
     Pair p;
     p.hhat_rupture = bridge.hhat_rupture();
-    p.even_at_rupture = bridge.ruptures_at_piece_end();
+    p.even_at_rupture = bridge.rupture_has_slope();
     for (int ix = 0; ix < gap_points; ++ix) {
         const double x = gap_fraction(double(ix) / (gap_points - 1));
         const auto r = bridge.solve(x * p.hhat_rupture);

@@ -391,7 +391,83 @@ std::optional<Rupture> fold_of_family(double vhat, double theta, const Lower& lo
 
 Lower lower_of(const std::optional<ContactAngle>& plate) { return plate ? Lower{true, plate->radians()} : Lower{}; }
 
+// Symmetry breaking. Without the mirror symmetry a bridge between equal spheres at half gap d is
+// a meridian shot from the lower sphere's contact line (filling angle β₁, curvature κ) that must
+// meet the upper sphere at the contact angle and hold V̂: two residuals in two unknowns. Along the
+// symmetric family their Jacobian is singular at the fold (a symmetric null vector) and where an
+// antisymmetric one appears: there the constant-volume bridge stops being stable against liquid
+// moving to one sphere. Residuals (g, V) of the shot from (β₁, κ); g measured where the meridian
+// meets the upper sphere (its angle mismatch) or, at small θ where it meets the sphere almost
+// tangentially, where it reaches the contact angle (its distance inside the sphere).
+std::optional<std::array<double, 2>> unmirrored_residuals(double beta1, double kappa, double d, double theta, bool by_angle,
+                                                         const YoungLaplaceTolerance& tol) {
+    gsl_odeiv2_system sys{meridian_rhs, nullptr, 4u, &kappa};
+    const double c = 1 + d;  // the upper sphere's centre; the lower one's is at −c
+    const State start{std::sin(beta1), -c + std::cos(beta1), -(pi / 2 - beta1 - theta), 0, 0};  // the mirror of the upper line
+    const auto inside = [c](const State& y) { return 1 - (y[0] * y[0] + (y[1] - c) * (y[1] - c)); };
+    const auto inside_rate = [c](const State& y) { return -2 * (y[0] * std::sin(y[2]) + (y[1] - c) * std::cos(y[2])); };
+    const auto angle = [&](const State& y) { return y[2] + std::atan2(y[0], c - y[1]) + theta - pi / 2; };
+    const auto angle_rate = [&](const State& y) {
+        const double w = c - y[1];
+        return std::cos(y[2]) / y[0] - kappa + (w * std::sin(y[2]) + y[0] * std::cos(y[2])) / (y[0] * y[0] + w * w);
+    };
+    const auto stop = [&](const State& y) { return by_angle ? angle(y) : inside(y); };
+    const auto end = integrate_to(
+        sys, start, 1e-4, tol,
+        [&](const State&, const State& y, bool too_long) { return stop(y) >= 0 ? Step::reached : too_long || !(y[0] > 0) ? Step::no_shape : Step::on; },
+        stop, [&](const State& y) { return by_angle ? angle_rate(y) : inside_rate(y); }, 1.0);
+    if (!end) return std::nullopt;
+    const auto cap = [](double b) { const double h = 1 - std::cos(b); return pi * h * h * (3 - h) / 3; };
+    const double beta2 = std::atan2((*end)[0], c - (*end)[1]);
+    return std::array{by_angle ? inside(*end) : angle(*end), (*end)[3] - cap(beta1) - cap(beta2)};
+}
+
+// det ∂(g, V)/∂(β₁, κ) at a symmetric shape, by central differences.
+std::optional<double> unmirrored_determinant(const BridgeShape& b, double theta, bool by_angle, const YoungLaplaceTolerance& tol) {
+    const double db = 1e-6 * b.filling_angle, dk = 1e-6 * std::max(1.0, std::abs(b.curvature));
+    const auto bp = unmirrored_residuals(b.filling_angle + db, b.curvature, b.half_gap, theta, by_angle, tol);
+    const auto bm = unmirrored_residuals(b.filling_angle - db, b.curvature, b.half_gap, theta, by_angle, tol);
+    const auto kp = unmirrored_residuals(b.filling_angle, b.curvature + dk, b.half_gap, theta, by_angle, tol);
+    const auto km = unmirrored_residuals(b.filling_angle, b.curvature - dk, b.half_gap, theta, by_angle, tol);
+    if (!bp || !bm || !kp || !km) return std::nullopt;
+    const double gb = ((*bp)[0] - (*bm)[0]) / (2 * db), vb = ((*bp)[1] - (*bm)[1]) / (2 * db);
+    const double gk = ((*kp)[0] - (*km)[0]) / (2 * dk), vk = ((*kp)[1] - (*km)[1]) / (2 * dk);
+    return gb * vk - gk * vb;
+}
+
 }  // namespace
+
+SymmetryCheck YoungLaplaceBridge::check_symmetry(Residual residual) const {
+    // The determinant keeps the sign it has near contact (a stable bridge) up to the fold unless an
+    // antisymmetric mode appears first: scan towards the fold (1 − x shrinking geometrically),
+    // then bisect to 1e-8 of the fold gap.
+    const double fold = rupture_->hhat;
+    const auto det_at = [&](double x) -> std::optional<double> {
+        const auto r = solve_on_family(x * fold);
+        return r.ok() ? unmirrored_determinant(r.shape, theta_.radians(), residual == Residual::by_angle, tol_) : std::nullopt;
+    };
+    const auto reference = det_at(0.1);
+    if (!reference || *reference == 0) return {SymmetryStatus::not_determined, 0};
+    double stable = 0.1;
+    for (double rest = 0.6; rest > 1e-6; rest *= 0.6) {
+        const double x = 1 - rest;
+        const auto det = det_at(x);
+        if (!det) return {SymmetryStatus::not_determined, 0};
+        if ((*det > 0) == (*reference > 0)) {
+            stable = x;
+            continue;
+        }
+        double broken = x;
+        while (broken - stable > 1e-8) {
+            const double mid = 0.5 * (stable + broken);
+            const auto dm = det_at(mid);
+            if (!dm) return {SymmetryStatus::not_determined, 0};
+            ((*dm > 0) == (*reference > 0) ? stable : broken) = mid;
+        }
+        return {SymmetryStatus::breaks, stable * fold};
+    }
+    return {SymmetryStatus::holds_to_fold, fold};
+}
 
 std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol) {
     require_positive(vhat, "vhat");
@@ -406,6 +482,8 @@ YoungLaplaceBridge::YoungLaplaceBridge(double vhat, ContactAngle theta, const Yo
     const Lower lower = lower_of(plate_);
     widest_neck_ = widest_neck(vhat, theta.radians(), lower, tol);
     if (widest_neck_) rupture_ = fold_of_family(vhat, theta.radians(), lower, tol, *widest_neck_);
+    if (family_ok() && !plate_)  // a plate is its own mirror: nothing to break
+        symmetry_ = check_symmetry(theta.degrees() < 20 ? Residual::by_angle : Residual::at_sphere);
     if (!family_ok())
         family_message_ = "no concave bridge of V^ = " + format_number(vhat) + " at theta = " + format_number(theta.degrees()) +
                           (plate_ ? " deg (sphere), " + format_number(plate_->degrees()) + " deg (plate)" : " deg") +
@@ -417,7 +495,25 @@ YoungLaplaceBridge YoungLaplaceBridge::sphere_plane(double vhat, ContactAngle th
     return YoungLaplaceBridge(vhat, theta, tol, theta_plate);
 }
 
+double YoungLaplaceBridge::hhat_rupture() const {
+    if (!rupture_) return 0.0;
+    return symmetry_.status == SymmetryStatus::breaks ? symmetry_.hhat : rupture_->hhat;
+}
+
 YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
+    require_finite(hhat, "hhat");
+    if (family_ok() && hhat > hhat_rupture() && hhat <= rupture_->hhat) {
+        YoungLaplaceResult res;
+        res.status = YoungLaplaceStatus::above_rupture;
+        res.hhat_rupture = hhat_rupture();
+        res.message = "h^ = " + format_number(hhat) + " is beyond rupture (h^_c = " + format_number(hhat_rupture()) +
+                      ": the symmetric bridge breaks symmetry there, before its fold at " + format_number(rupture_->hhat) + ")";
+        return res;
+    }
+    return solve_on_family(hhat);
+}
+
+YoungLaplaceResult YoungLaplaceBridge::solve_on_family(double hhat) const {
     require_finite(hhat, "hhat");
     YoungLaplaceResult res;
     if (!family_ok()) {  // no concave bridge of this volume at this angle: the input is out of scope
@@ -425,7 +521,7 @@ YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
         res.message = family_message_;
         return res;
     }
-    res.hhat_rupture = rupture_->hhat;
+    res.hhat_rupture = hhat_rupture();
     if (hhat < 0) {
         res.status = YoungLaplaceStatus::outside_scope;
         res.message = "overlapping spheres (h^ < 0) are outside the solver's scope; use h^ = 0";
@@ -433,7 +529,7 @@ YoungLaplaceResult YoungLaplaceBridge::solve(double hhat) const {
     }
     if (hhat > rupture_->hhat) {
         res.status = YoungLaplaceStatus::above_rupture;
-        res.message = "h^ = " + format_number(hhat) + " is beyond rupture (h^_c = " + format_number(rupture_->hhat) + ")";
+        res.message = "h^ = " + format_number(hhat) + " is beyond rupture (h^_c = " + format_number(hhat_rupture()) + ")";
         return res;
     }
     const Lower lower = lower_of(plate_);

@@ -75,6 +75,14 @@ struct Rupture {
 };
 std::optional<Rupture> young_laplace_rupture(double vhat, ContactAngle theta, const YoungLaplaceTolerance& tol = {});
 
+// Whether the symmetric bridge between equal spheres loses stability to an antisymmetric mode
+// (liquid moving to one sphere) before the fold of its family; hhat: where (the fold when it holds).
+enum class SymmetryStatus { holds_to_fold, breaks, not_determined };
+struct SymmetryCheck {
+    SymmetryStatus status = SymmetryStatus::not_determined;
+    double hhat = 0;
+};
+
 // Bridges of one volume and contact angle: the constant-volume family is traced once (rupture,
 // widest neck), then each gap costs one root search. Use it for curves and grids.
 class YoungLaplaceBridge {
@@ -90,8 +98,19 @@ public:
     // Valid when family_ok(); otherwise every solve() reports outside_scope with family_message().
     bool family_ok() const { return rupture_.has_value() && widest_neck_.has_value(); }
     const std::string& family_message() const { return family_message_; }
-    double hhat_rupture() const { return rupture_ ? rupture_->hhat : 0.0; }
-    bool ruptures_at_piece_end() const { return rupture_ && rupture_->piece_end; }
+    // Rupture at the first instability: the fold of the family, or, between spheres, symmetry
+    // breaking where it comes first (θ ≳ 25°).
+    double hhat_rupture() const;
+    double hhat_fold() const { return rupture_ ? rupture_->hhat : 0.0; }
+    const SymmetryCheck& symmetry() const { return symmetry_; }  // between spheres; not_determined on a plate
+    // The same check with a chosen second residual (the default: by_angle below θ = 20°, where the
+    // meniscus meets the sphere almost tangentially; at_sphere above, where near rupture the angle
+    // condition can be met early): two routes to one answer, compared in tests.
+    enum class Residual { at_sphere, by_angle };
+    SymmetryCheck check_symmetry(Residual residual) const;
+    // Whether F̂ keeps a finite slope in ĥ at rupture (no fold there): the end of a plate's piece,
+    // or symmetry breaking.
+    bool rupture_has_slope() const { return (rupture_ && rupture_->piece_end) || symmetry_.status == SymmetryStatus::breaks; }
 
     // The stable bridge at full gap ĥ ≥ 0. Never a silent number: status says whether a bridge
     // exists (above_rupture: none), and not_converged / outside_scope carry a message.
@@ -104,7 +123,9 @@ private:
     std::optional<ContactAngle> plate_;  // the plate's contact angle; nullopt: two equal spheres
     std::optional<Rupture> rupture_;
     std::optional<double> widest_neck_;
+    SymmetryCheck symmetry_;
     std::string family_message_;
+    YoungLaplaceResult solve_on_family(double hhat) const;  // any gap up to the fold
 };
 
 // One-off convenience: YoungLaplaceBridge(vhat, theta, tol).solve(hhat).
