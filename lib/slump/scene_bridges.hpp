@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bridge/bridge_curve.hpp"
+#include "dem/laws/cohesion.hpp"
 #include "slump/slump_scene.hpp"
 
 namespace demscale::slump {
@@ -16,6 +17,10 @@ namespace demscale::slump {
 // no concave bridge at the scene's V̂ and θ.
 bridge::BridgeCurve particle_bridge_curve(const SlumpScene& s);
 bridge::BridgeCurve wall_bridge_curve(const SlumpScene& s);
+
+// The wet scene's bridge law: both curves, the liquid per bridge from Eq. 5 with the particle mass
+// (one V̂ for every pair), its viscous part; largest_radius (m) sets the range.
+dem::CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius);
 
 std::string bridge_variant_name(const SlumpScene& s);  // mikami1998, yun-park-2017 or table
 std::string wall_bridge_name(const SlumpScene& s);     // table or mikami1998

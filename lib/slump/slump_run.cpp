@@ -9,19 +9,7 @@
 
 namespace demscale::slump {
 
-namespace {
-
 using namespace dem;
-
-// The wet law's bridge: liquid per bridge from Eq. 5 with the particle mass, the same V̂ for every
-// pair (its curves: slump/scene_bridges.hpp); largest_radius sets the range (the scene's R for its
-// own fills).
-CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius) {
-    return {particle_bridge_curve(s), largest_radius, s.liquid.surface_tension_n_per_m,
-            s.wet_walls ? std::optional(wall_bridge_curve(s)) : std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
-}
-
-}  // namespace
 
 void check_slump_time_step(const SlumpScene& s, bool force_dt) {
     for (const auto& limit : time_step_limits(s, s.radius_m))

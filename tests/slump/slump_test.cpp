@@ -7,9 +7,11 @@
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "bridge/young_laplace.hpp"
 #include "slump/bridge_warnings.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/fill.hpp"
+#include "slump/scene_bridges.hpp"
 #include "slump/measurements.hpp"
 #include "io/table_config.hpp"
 #include "report/table1_particles.hpp"
@@ -247,4 +249,31 @@ TEST_CASE("A scene's bridge warnings: none for the default wet scene, the wall f
     REQUIRE(printed.size() == 1);
     CHECK(printed[0].find("particle-particle bridges (yun-park-2017)") != std::string::npos);
     CHECK(printed[0].find("exceeds the physical bound 2") != std::string::npos);
+}
+
+TEST_CASE("A scene's wet walls pull at contact and across a gap: the exact sphere-plane force, or Mikami's wall fit by name",
+          "[slump][bridge][curve]") {
+    // The wall curve must reach the law's constructor, which precomputes the contact force from it
+    // (assigned afterwards, a touching sphere felt no wall bridge at all).
+    slump::SlumpScene s;
+    s.wet_walls = true;
+    const double r = s.radius_m, gamma = s.liquid.surface_tension_n_per_m, vhat = slump::bridge_vhat(s);
+    const auto plate = bridge::YoungLaplaceBridge::sphere_plane(vhat, s.liquid.contact_angle, s.liquid.contact_angle);
+    const auto fit = bridge::mikami_coefficients(vhat, s.liquid.contact_angle, s.bridge, bridge::BridgeGeometry::sphere_wall);
+    for (auto source : {bridge::CurveSource::exact, bridge::CurveSource::fit}) {
+        s.wall_curve = source;
+        const auto law = slump::scene_bridge(s, r);
+        dem::CohesionLiquidBridge::State state;
+        dem::Dissipation lost;
+        for (double hhat : {0.0, 0.1}) {
+            INFO((source == bridge::CurveSource::exact ? "exact" : "fit") << ", gap " << hhat << " R");
+            const double pulled = law.pull(hhat == 0 ? 1e-6 * r : -hhat * r, r, 0.0, 1e-6, true, state, lost);
+            const auto exact = plate.solve(hhat);
+            REQUIRE(exact.ok());
+            const double expected = source == bridge::CurveSource::exact ? 2 * M_PI * r * gamma * exact.shape.fhat_neck
+                                                                          : fit.force_scale * r * gamma * bridge::mikami_fhat(fit, hhat);
+            CHECK(pulled == Approx(expected).epsilon(5e-4));
+            CHECK(pulled > 0);
+        }
+    }
 }
