@@ -25,6 +25,7 @@
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
 #include "slump/bridge_warnings.hpp"
+#include "slump/scene_bridges.hpp"
 #include "slump/slump_files.hpp"
 #include "slump/study.hpp"
 #include "stats/verdict.hpp"
@@ -211,7 +212,11 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             "(2 pi R gamma, C = 0.042) gives F = " + format_short(f_printed * 1e3) + " mN; Mikami's published form (pi R gamma) gives " +
             format_short(f_published * 1e3) + " mN; no sphere-sphere bridge can exceed 2 pi R gamma cos(theta) = " +
             format_short(bound * 1e3) + " mN. The printed form exceeds the bound by " + pct(f_printed / bound - 1) +
-            ", so demscale defaults to the published form (" + std::string(bridge::to_string(scene.bridge.variant)) + " in this scene)."});
+            ", so demscale defaults to the published form" +
+            (scene.particle_curve == bridge::CurveSource::exact
+                 ? ". This scene's DEM bridges follow neither: they take the exact Young-Laplace bridge (bridge_variant = table), "
+                   "and the table and curves above show the fit it replaces."
+                 : " (" + slump::bridge_variant_name(scene) + " in this scene).")});
         // The fits' findings at the scene's V̂ and θ, and with wet walls the wall fit's excess over
         // the exact sphere–plane bridge: what every command that runs the scene prints.
         for (const auto& w : slump::bridge_warnings(scene)) caveats.push_back({"the scene's bridge", w});
