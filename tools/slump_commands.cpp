@@ -172,7 +172,8 @@ int run_slump_command(const Options& o) {
 // `demscale slump --start`), so both engines lift and spread the very same particles.
 int run_export_liggghts(const Options& o) {
     use_threads(o.threads);
-    const auto scene = load_scene(o.scene);
+    // A coarse-grained scene exports as it runs: radius S_f R, surface tension gamma S_f^k, ...
+    const auto scene = slump::coarse_grained(load_scene(o.scene), {o.sf, o.exponent, o.scaled});
     slump::SlumpPhases phases;
     phases.settle_only = true;
     const auto r = slump::run_slump(scene, slump_progress(nullptr, 0), o.force_dt, phases);
@@ -180,7 +181,9 @@ int run_export_liggghts(const Options& o) {
     io::write_particle_state(dir / "settled.csv", r.final_state);
     for (const auto& f : slump::export_liggghts(scene, r.final_state, dir)) std::cout << "wrote " << f.string() << "\n";
     std::cout << "wrote " << (dir / "settled.csv").string() << "\n";
-    if (scene.wet) std::cerr << "note: LIGGGHTS-PUBLIC has no Mikami bridge; the deck is dry\n";
+    if (scene.wet)
+        std::cerr << "note: wet scene: bridges as LIGGGHTS' cohesion easo/capillary/viscous (between particles"
+                  << (scene.wet_walls ? "; walls dry" : "") << "); the deck's header lists what differs\n";
     return 0;
 }
 
@@ -226,6 +229,10 @@ std::vector<Command> slump_commands(CLI::App& app) {
     auto* lig = exp->add_subcommand("liggghts", "settle the fill, then write a LIGGGHTS deck, data file and cone STL");
     lig->add_option("--scene", o->scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     lig->add_option("--out", o->out_dir, "output folder")->required();
+    lig->add_option("--sf", o->sf, "scale factor S_f: export the coarse-grained scene")->capture_default_str();
+    lig->add_option("--exponent", o->exponent, "surface tension gamma S_f^k of the coarse-grained scene")->capture_default_str();
+    lig->add_option("--scale", o->scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity, viscosity")
+        ->delimiter(',');
     lig->add_option("--threads", o->threads, "OpenMP threads for the settling run (default: the idle cores)");
     exp->require_subcommand(1);
 

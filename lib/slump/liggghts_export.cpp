@@ -6,8 +6,10 @@
 #include <numbers>
 #include <sstream>
 
+#include "bridge/mikami.hpp"
 #include "io/atomic_file.hpp"
 #include "slump/fill.hpp"
+#include "slump/scene_bridges.hpp"
 
 namespace demscale::slump {
 
@@ -58,6 +60,65 @@ std::string cone_stl(const slump::SlumpScene& sc) {
     return s.str();
 }
 
+// A wet scene in LIGGGHTS-PUBLIC 3.8: `cohesion easo/capillary/viscous`, Soulié et al.'s (2006)
+// form of Mikami's regression, between particles only (it refuses walls). Each quantity mapped
+// explicitly (docs/dem-engine.md, "LIGGGHTS export"); what cannot be matched is listed in `notes`.
+struct WetDeck {
+    std::string properties;           // fix property/global lines
+    std::vector<std::string> notes;   // the deck header's list of differences
+};
+WetDeck wet_deck(const slump::SlumpScene& sc) {
+    WetDeck w;
+    const double r = sc.radius_m, vhat = bridge_vhat(sc), theta = sc.liquid.contact_angle.radians();
+    // Liquid per particle: each sphere gives (1 − √(1 − R_j²/(R_i + R_j)²))/2 of its liquid to a
+    // bridge (0.0670 for equal spheres), so the bridge holds V when each sphere carries V/0.1340.
+    const double share = 1 - std::sqrt(0.75), particle_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    const double content = vhat * r * r * r / (share * particle_volume);
+    // LIGGGHTS takes θ_eff = θ_i·θ_j/2 (radians) for the pair; writing √(2θ) makes θ_eff the scene's θ.
+    const double theta_written_deg = std::sqrt(2 * theta) * 180 / std::numbers::pi;
+    // Its rupture is Lian's (1 + θ/2)·V^(1/3); the neighbour list must reach that far.
+    const double rupture_lian = (1 + 0.5 * theta) * std::cbrt(vhat);
+    const double min_gap_over_rstar = 2 * sc.min_gap_ratio;  // LIGGGHTS measures s_min over R* = R/2
+    int property = 0;
+    auto prop = [&](const std::string& name, const std::string& kind, double value) {
+        std::ostringstream l;
+        l.precision(10);
+        l << "fix liquid" << ++property << " all property/global " << name << " " << kind << " " << value << "\n";
+        w.properties += l.str();
+    };
+    prop("surfaceLiquidContentInitial", "scalar", content);
+    prop("surfaceTension", "scalar", sc.liquid.surface_tension_n_per_m);
+    prop("contactAngle", "peratomtype", theta_written_deg);
+    prop("fluidViscosity", "scalar", sc.viscosity_pa_s);
+    prop("minSeparationDistanceRatio", "scalar", min_gap_over_rstar);
+    prop("maxSeparationDistanceRatio", "scalar", 1 + 0.55 * rupture_lian);
+
+    const double lnv = std::log(vhat), t2 = theta * theta;
+    const double fit = std::exp((-0.34 * lnv - 0.96) * t2 - 0.019 * lnv + 0.48) + 0.0042 * lnv + 0.078;      // Mikami, at contact
+    const double soulie = std::exp((-0.148 * lnv - 0.96) * t2 - 0.0082 * lnv + 0.48) + 0.0018 * lnv + 0.078;  // Soulié, at contact
+    const double scene_rupture = rupture_hhat(vhat, sc.liquid.contact_angle, sc.bridge.rupture);
+    auto pct = [](double x) { return format_short(100 * x, 3) + " %"; };
+    w.notes = {
+        "WET: cohesion easo/capillary/viscous (Soulie et al. 2006's form of Mikami's regression), V^ = " + format_short(vhat, 4) +
+            " per bridge as in demscale (Eq. 5): surfaceLiquidContentInitial = V / (0.1340 x sphere volume) = " + format_short(content, 4),
+        "force: pi gamma sqrt(Ri Rj) (exp(A s/R2 + B) + C), as demscale's pi R gamma F^ for equal spheres; Soulie's B and C differ "
+            "from Mikami's: at contact " + pct(soulie / fit - 1) + " against the mikami1998 form",
+        "rupture: Lian (1 + theta/2) V^(1/3) = " + format_short(rupture_lian, 4) + " R; the scene's " +
+            std::string(bridge::to_string(sc.bridge.rupture)) + " law gives " + format_short(scene_rupture, 4) + " R (" +
+            pct(rupture_lian / scene_rupture - 1) + ")",
+        "contact angle: written as sqrt(2 theta) = " + format_short(theta_written_deg, 4) +
+            " deg so that LIGGGHTS' pair angle theta_i theta_j / 2 (rad) equals the scene's " +
+            format_short(sc.liquid.contact_angle.degrees(), 3) + " deg",
+        "viscous part: fluidViscosity = " + format_short(sc.viscosity_pa_s) +
+            " Pa s (0: off); minSeparationDistanceRatio = s_min / R* = 2 x liquid.min_gap_ratio",
+        "liquid: carried per particle and shared evenly again at rupture (equal spheres: nothing moves); demscale gives every bridge V",
+    };
+    if (sc.wet_walls) w.notes.push_back("walls DRY here: easo/capillary/viscous refuses walls; the demscale scene has wet walls");
+    if (sc.particle_curve != bridge::CurveSource::fit || sc.bridge.variant != bridge::MikamiVariant::mikami1998)
+        w.notes.push_back("the scene's bridges follow " + bridge_variant_name(sc) + "; LIGGGHTS has only the fit above");
+    return w;
+}
+
 // particles: the pile's count; atoms after it are the rough floor's grains, which only the pile touches.
 std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains) {
     const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
@@ -75,11 +136,15 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
             if (!part.liggghts_model.empty()) models += " " + std::string(part.liggghts_model);
             if (!part.liggghts_setting.empty()) settings += " " + std::string(part.liggghts_setting);
         }
-    const std::string laws = "model hertz tangential history" + models + (sc.rolling_resistance ? rolling : std::string()) + settings;
+    const std::string rolling_words = sc.rolling_resistance ? rolling : std::string();
+    // The bridge acts between particles only (LIGGGHTS refuses it on walls).
+    const std::string laws = "model hertz tangential history" + models + (sc.wet ? " cohesion easo/capillary/viscous" : "") + rolling_words + settings;
+    const std::string wall_laws = "model hertz tangential history" + models + rolling_words + settings;
+    const WetDeck wet = sc.wet ? wet_deck(sc) : WetDeck{};
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";
-    if (sc.wet) s << "# NOTE: the demscale scene is wet; LIGGGHTS-PUBLIC has no Mikami bridge, so this deck is DRY.\n";
+    for (const auto& n : wet.notes) s << "# " << n << "\n";
     // Everything that moves acts on group `pile`; the floor's grains (if any) are never integrated.
     const std::string pile = grains == 0 ? "all" : "pile";
     s << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\nunits si\n"
@@ -88,7 +153,8 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
                       << ": the rough floor's grains, held in place (no integration)\n";
     s
       << "neighbor " << sc.skin_m << " bin\nneigh_modify delay 0\n";
-    // The material: every parameter with a LIGGGHTS name of each law part that acts, from its table.
+    // The material: every parameter with a LIGGGHTS name of each law part that acts, from its table,
+    // then the liquid's (mapped above).
     int property = 0;
     for (const auto& part : dem::law_parts()) {
         if (!part.active(sc)) continue;
@@ -102,12 +168,13 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
               << p.get(sc) << "\n";
         }
     }
+    s << wet.properties;
     s << "pair_style gran " << laws << "\npair_coeff * *\n"
       << "timestep " << sc.dt_s << "\n"
       << "fix gravi " << pile << " gravity " << sc.gravity << " vector 0.0 0.0 -1.0\n"
       << "fix cone all mesh/surface file cone.stl type 1\n"
-      << "fix walls " << pile << " wall/gran " << laws << " mesh n_meshes 1 meshes cone\n"
-      << "fix floor " << pile << " wall/gran " << laws << " primitive type 1 zplane 0.0\n"
+      << "fix walls " << pile << " wall/gran " << wall_laws << " mesh n_meshes 1 meshes cone\n"
+      << "fix floor " << pile << " wall/gran " << wall_laws << " primitive type 1 zplane 0.0\n"
       << "fix integr " << pile << " nve/sphere\n"
       << "thermo " << std::max(1L, (lift_steps + spread_steps) / 20) << "\nthermo_style custom step atoms ke\n"
       << "# lift the cone " << sc.lift_height_m * 1e3 << " mm at " << sc.lift_speed_m_per_s << " m/s, then remove it\n"

@@ -306,15 +306,25 @@ case $case_name in
     # The deck carries the scene's own values; steps by hand: lift 65 mm / 0.3 m/s / 2e-5 s = 10833,
     # spread 0.2 s / 2e-5 s = 10000. The data file holds the settled fill: same count, same spheres.
     { printf '[contact]\nrolling_damping = 0.3\n'; cat "$src/data/scenes/small_wet.toml"; } >"$work/damped.toml"
-    expect 0 'LIGGGHTS-PUBLIC has no Mikami bridge' -- "$demscale" export liggghts --scene "$work/damped.toml" --out "$work/deck"
+    expect 0 "bridges as LIGGGHTS' cohesion easo/capillary/viscous" -- "$demscale" export liggghts --scene "$work/damped.toml" --out "$work/deck"
     for line in 'fix m1 all property/global youngsModulus peratomtype 5e\+06' 'poissonsRatio peratomtype 0.3$' \
         'coefficientRestitution peratomtypepair 1 0.5$' 'coefficientFriction peratomtypepair 1 0.5$' \
         'coefficientRollingFriction peratomtypepair 1 0.1$' 'rollingStiffness scalar 2.25$' \
-        'coefficientRollingViscousDamping peratomtypepair 1 0.3$' '^pair_style gran model hertz tangential history rolling_friction epsd3$' \
+        'coefficientRollingViscousDamping peratomtypepair 1 0.3$' \
+        '^pair_style gran model hertz tangential history cohesion easo/capillary/viscous rolling_friction epsd3$' \
+        '^fix walls all wall/gran model hertz tangential history rolling_friction epsd3 mesh' \
+        'surfaceLiquidContentInitial scalar 0.099$' 'surfaceTension scalar 0.074$' 'contactAngle peratomtype 0$' \
+        'fluidViscosity scalar 0$' 'minSeparationDistanceRatio scalar 0.02$' '^# rupture: Lian' \
         '^timestep 2e-05$' '^neighbor 0.0006 bin$' 'gravity 9.81 vector 0.0 0.0 -1.0$' \
         '^fix lift all move/mesh mesh cone linear 0.0 0.0 0.3$' '^run 10833$' '^run 10000$'; do
       grep -Eq -- "$line" "$work/deck/in.slump" || { cat "$work/deck/in.slump" >&2; fail "deck lacks /$line/"; }
     done
+    # The liquid each sphere carries: the bridge's V over the share a bridge takes, 1 - sqrt(3/4);
+    # with Eq. 5 (V = w m / rho_l x that share) it is w rho_s / rho_l = 0.045 x 2200 / 1000 = 0.099
+    # of the sphere's volume, by hand. A coarse-grained export carries gamma S_f^k: 0.074 x 1.4.
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/damped.toml" --sf 1.4 --exponent 1 --out "$work/coarse"
+    grep -Eq 'surfaceTension scalar 0.1036$' "$work/coarse/in.slump" || fail "coarse deck's surface tension"
+    grep -Eq 'surfaceLiquidContentInitial scalar 0.099$' "$work/coarse/in.slump" || fail "coarse deck's liquid"
     n=$(($(wc -l <"$work/deck/settled.csv") - 2))
     [ "$n" -gt 300 ] || fail "settled fill of $n spheres"
     grep -q "^$n atoms$" "$work/deck/particles.data" || fail "data file does not hold the $n settled spheres"
