@@ -144,6 +144,8 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";
+    s << "# Spreading runs the scene's whole spread_time_s (" << sc.spread_time_s
+      << " s): LIGGGHTS has no rest criterion; compare with demscale slump --start settled.csv --fixed-time.\n";
     for (const auto& n : wet.notes) s << "# " << n << "\n";
     // Everything that moves acts on group `pile`; the floor's grains (if any) are never integrated.
     const std::string pile = grains == 0 ? "all" : "pile";
