@@ -2,6 +2,7 @@
 
 #include "dem/law_parts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -17,11 +18,27 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string data_file(const dem::Particles& p) {
+// The box a LIGGGHTS user would fit to the scene (its neighbour bins cover the whole box; a sphere
+// that leaves it is lost): twice the radius of the fill spread out as one layer of spheres at solid
+// fraction 0.6, or the rough floor; high enough for the lifted cone. m.
+struct Box {
+    double half_width, height;
+};
+Box fitted_box(const slump::SlumpScene& sc, const dem::Particles& p) {
+    double solid = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) solid += 4.0 / 3.0 * std::numbers::pi * std::pow(p.radius[i], 3);
+    const double layer = std::sqrt(solid / 0.6 / (2 * sc.radius_m) / std::numbers::pi);
+    const double floor = sc.rough_floor ? 0.5 * sc.rough_floor_diameter_m + 2 * sc.radius_m : 0.0;
+    return {std::max({2 * layer, floor, 0.5 * sc.bottom_diameter_m + 2 * sc.radius_m}), 1.1 * (sc.height_m + sc.lift_height_m)};
+}
+
+std::string data_file(const dem::Particles& p, const Box& box) {
     std::ostringstream s;
     s.precision(17);
     s << "LIGGGHTS data file written by demscale (settled slump fill)\n\n"
-      << p.size() << " atoms\n1 atom types\n\n-0.25 0.25 xlo xhi\n-0.25 0.25 ylo yhi\n-0.001 0.2 zlo zhi\n\nAtoms\n\n";
+      << p.size() << " atoms\n1 atom types\n\n"
+      << -box.half_width << ' ' << box.half_width << " xlo xhi\n" << -box.half_width << ' ' << box.half_width << " ylo yhi\n"
+      << "-0.001 " << box.height << " zlo zhi\n\nAtoms\n\n";
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double rho = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * std::pow(p.radius[i], 3));
         s << i + 1 << " 1 " << 2 * p.radius[i] << ' ' << rho << ' ' << p.position[i].x() << ' ' << p.position[i].y() << ' '
@@ -194,7 +211,7 @@ std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem:
     dem::Particles all = settled.mobile();
     const std::size_t pile = all.size();
     all.append(slump::floor_grains(scene));
-    io::write_file_atomically(out_dir / "particles.data", data_file(all));
+    io::write_file_atomically(out_dir / "particles.data", data_file(all, fitted_box(scene, settled.mobile())));
     io::write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
     io::write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile));
     return {out_dir / "in.slump", out_dir / "particles.data", out_dir / "cone.stl"};

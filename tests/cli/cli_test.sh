@@ -333,6 +333,12 @@ case $case_name in
     [ "$(awk 'NF == 7 && $3 == 0.0044000000000000003 && $4 == 2200' "$work/deck/particles.data" | wc -l)" -eq "$n" ] \
       || fail "atoms with another diameter or density"
     [ "$(grep -c 'endfacet' "$work/deck/cone.stl")" -gt 50 ] || fail "cone mesh has too few facets"
+    # A box fitted to the scene: narrower than the old +-0.25 m, holding every sphere, above the lifted cone.
+    box=$(awk '/xlo xhi/ {print $2}' "$work/deck/particles.data")
+    awk -v b="$box" 'BEGIN {exit !(b > 0.05 && b < 0.2)}' || fail "box half-width $box m"
+    awk -v b="$box" '/^Velocities/ {done = 1} !done && NF == 7 && ($5 > b || $5 < -b || $6 > b || $6 < -b) {bad++} END {exit bad > 0}' "$work/deck/particles.data" \
+      || fail "spheres outside the box"
+    grep -q '^-0.001 0.1342.* zlo zhi$' "$work/deck/particles.data" || fail "box height: 1.1 x (57 + 65) mm"
     # Without rolling resistance the deck asks for no rolling law and sets no rolling coefficient.
     { printf '[contact]\nrolling_resistance = false\n'; cat "$src/data/scenes/small_wet.toml"; } >"$work/free.toml"
     expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/free.toml" --out "$work/free"
