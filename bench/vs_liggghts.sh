@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # demscale against LIGGGHTS on the same slump scene: both engines lift the cone from the same
-# settled fill (settled by demscale, exported with `demscale export liggghts`) and let the pile
-# spread for the scene's full spread time. Prints rates (particle-steps/s), their ratio, and both
-# final piles. Usage: bench/vs_liggghts.sh [SCENE] (default data/scenes/kantro_dry.toml; takes
-# several minutes). Last line: ratio_dry_1thread=X.XX
+# settled fill (settled by demscale, exported with `demscale export liggghts`, whose deck fits the
+# box to the scene) and let the pile spread for the scene's full spread time. The engines
+# alternate (ROUNDS rounds, default 2; the order flips each round), on 1 and on 2 threads/ranks.
+# Before each run the script measures how busy the cores are (2 s of /proc/stat, nothing of ours
+# running) and logs it; a pair whose runs started with more than BUSY_LIMIT cores (default 0.3)
+# busy with other work gets no ratio. Prints every run, every pair's ratio (LIGGGHTS time over
+# demscale time) and the median per thread count, and both final piles.
+# Usage: [ROUNDS=2] [BUSY_LIMIT=0.3] bench/vs_liggghts.sh [SCENE]
+# (default data/scenes/kantro_dry.toml; several minutes per round). Last line: ratio_dry_1thread=X.XX
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=${1:-data/scenes/kantro_dry.toml}
@@ -25,31 +30,52 @@ echo "scene: $scene; work folder: $work" >&2
 build/demscale export liggghts --scene "$scene" --out "$work/lig" >/dev/null 2>&1
 
 json() { sed -n "s/^ *\"$2\": \\([^,]*\\),\\?$/\\1/p" "$1" | head -1; }
-# demscale: lift and spread from the settled fill, whole spread time.
+rounds=${ROUNDS:-2} busy_limit=${BUSY_LIMIT:-0.3}
+# Cores busy with other work over 2 s (from /proc/stat: non-idle jiffies over all, times the cores).
+busy() {
+  local first second
+  first=$(head -1 /proc/stat); sleep 2; second=$(head -1 /proc/stat)
+  printf '%s\n%s\n' "$first" "$second" | awk -v n="$(nproc)" '
+    {t = 0; for (i = 2; i <= NF; i++) t += $i; total[NR] = t; idle[NR] = $5 + $6}
+    END {printf "%.2f", n * (1 - (idle[2] - idle[1]) / (total[2] - total[1]))}'
+}
+run_demscale() {  # threads round
+  OMP_NUM_THREADS=$1 build/demscale slump --scene "$scene" --start "$work/lig/settled.csv" --fixed-time \
+    --format json --out "$work/ds$1_$2" --no-png >"$work/ds$1_$2.json" 2>/dev/null
+  json "$work/ds$1_$2.json" wall_s
+}
+run_liggghts() {  # ranks round; loop time only (setup excluded)
+  (cd "$work/lig" && mpirun --allow-run-as-root --oversubscribe -np "$1" liggghts -in in.slump >"log$1_$2" 2>&1)
+  cp "$work/lig/final.dump" "$work/lig/final$1.dump"
+  awk '/^Loop time of/ {s += $4} END {printf "%.3f", s}' "$work/lig/log$1_$2"
+}
+printf '%-6s %-8s %-9s %10s %12s\n' round threads engine busy_cores wall_s >&2
+declare -A ratios
 for t in 1 2; do
-  OMP_NUM_THREADS=$t build/demscale slump --scene "$scene" --start "$work/lig/settled.csv" --fixed-time \
-    --format json --out "$work/ds$t" --no-png >"$work/ds$t.json" 2>/dev/null
+  for r in $(seq 1 "$rounds"); do
+    order=(demscale liggghts); [ $((r % 2)) -eq 0 ] && order=(liggghts demscale)
+    loaded=0
+    for e in "${order[@]}"; do
+      b=$(busy); awk -v b="$b" -v l="$busy_limit" 'BEGIN {exit !(b > l)}' && loaded=1
+      if [ "$e" = demscale ]; then d=$(run_demscale "$t" "$r"); w=$d; else l=$(run_liggghts "$t" "$r"); w=$l; fi
+      printf '%-6s %-8s %-9s %10s %12s\n' "$r" "$t" "$e" "$b" "$w" >&2
+    done
+    if [ "$loaded" -eq 1 ]; then
+      echo "round $r, $t thread(s): other work on the cores; no ratio" >&2
+    else
+      ratios[$t]+="$(awk -v l="$l" -v d="$d" 'BEGIN {printf "%.3f", l / d}') "
+      echo "round $r, $t thread(s): liggghts/demscale = $(awk -v l="$l" -v d="$d" 'BEGIN {printf "%.2f", l / d}')" >&2
+    fi
+  done
 done
-# LIGGGHTS: the exported deck, 1 and 2 MPI ranks; loop times only (setup excluded).
-particles=$(json "$work/ds1.json" particles)
-steps=$(( $(json "$work/ds1.json" steps) ))
-for n in 1 2; do
-  (cd "$work/lig" && mpirun --allow-run-as-root --oversubscribe -np $n liggghts -in in.slump >"log$n" 2>&1)
-  cp "$work/lig/final.dump" "$work/lig/final$n.dump"
-done
-loop() { awk '/^Loop time of/ {s += $4} END {printf "%.3f", s}' "$work/lig/log$1"; }
-
-rate() { awk -v p="$particles" -v s="$steps" -v w="$1" 'BEGIN {printf "%.3g", p * s / w}'; }
-ds1=$(json "$work/ds1.json" wall_s); ds2=$(json "$work/ds2.json" wall_s)
-lg1=$(loop 1); lg2=$(loop 2)
-printf '%-28s %12s %12s %22s\n' engine threads/ranks wall_s particle_steps_per_s
-printf '%-28s %12s %12.2f %22s\n' demscale 1 "$ds1" "$(rate "$ds1")" demscale 2 "$ds2" "$(rate "$ds2")"
-printf '%-28s %12s %12.2f %22s\n' "liggghts $(dpkg-query -W -f='${Version}' liggghts)" 1 "$lg1" "$(rate "$lg1")" \
-  liggghts 2 "$lg2" "$(rate "$lg2")"
-echo "particles: $particles, steps: $steps (lift and spread)"
+particles=$(json "$work/ds1_1.json" particles)
+steps=$(( $(json "$work/ds1_1.json" steps) ))
+echo "particles: $particles, steps: $steps (lift and spread), liggghts $(dpkg-query -W -f='${Version}' liggghts)"
 echo "final pile, demscale (1 thread):"
-grep -E '"(final_height_mm|spread_d95_mm|spread_max_mm|repose_angle_deg)"' "$work/ds1.json"
+grep -E '"(final_height_mm|spread_d95_mm|spread_max_mm|repose_angle_deg)"' "$work/ds1_1.json"
 echo "final pile, liggghts (1 rank), measured by demscale:"
 build/demscale pile --dump "$work/lig/final1.dump" --scene "$scene" | grep -E 'height|spread|repose'
-awk -v l="$lg2" -v d="$ds2" 'BEGIN {printf "ratio_dry_2threads=%.2f\n", l / d}'
-awk -v l="$lg1" -v d="$ds1" 'BEGIN {printf "ratio_dry_1thread=%.2f\n", l / d}'
+median() { echo "$1" | tr ' ' '\n' | grep . | sort -g | awk '{v[NR] = $1} END {if (NR == 0) print "none"; else printf "%.2f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+echo "pairs without other work: 1 thread: ${ratios[1]:-none}; 2 threads: ${ratios[2]:-none}"
+echo "ratio_dry_2threads=$(median "${ratios[2]:-}")"
+echo "ratio_dry_1thread=$(median "${ratios[1]:-}")"
