@@ -94,7 +94,7 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
     // LIGGGHTS takes θ_eff = θ_i·θ_j/2 (radians) for the pair; writing √(2θ) makes θ_eff the scene's θ.
     const double theta_written_deg = std::sqrt(2 * theta) * 180 / std::numbers::pi;
     // Its rupture is Lian's (1 + θ/2)·V^(1/3); the neighbour list must reach that far.
-    const double rupture_lian = (1 + 0.5 * theta) * std::cbrt(vhat);
+    const double rupture_lian = bridge::rupture_hhat(vhat, sc.liquid.contact_angle, bridge::RuptureLaw::lian1993);
     const double min_gap_over_rstar = 2 * sc.min_gap_ratio;  // LIGGGHTS measures s_min over R* = R/2
     int property = 0;
     auto prop = [&](const std::string& name, const std::string& kind, double value) {
@@ -111,9 +111,9 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
     prop("maxSeparationDistanceRatio", "scalar", 1 + 0.55 * rupture_lian);
 
     const double lnv = std::log(vhat), t2 = theta * theta;
-    const double fit = std::exp((-0.34 * lnv - 0.96) * t2 - 0.019 * lnv + 0.48) + 0.0042 * lnv + 0.078;      // Mikami, at contact
+    const double fit = bridge::mikami_fhat(bridge::mikami_coefficients(vhat, sc.liquid.contact_angle), 0.0);  // Mikami, at contact
     const double soulie = std::exp((-0.148 * lnv - 0.96) * t2 - 0.0082 * lnv + 0.48) + 0.0018 * lnv + 0.078;  // Soulié, at contact
-    const double scene_rupture = rupture_hhat(vhat, sc.liquid.contact_angle, sc.bridge.rupture);
+    const double scene_rupture = bridge::rupture_hhat(vhat, sc.liquid.contact_angle, sc.bridge.rupture);
     auto pct = [](double x) { return format_short(100 * x, 3) + " %"; };
     w.notes = {
         "WET: cohesion easo/capillary/viscous (Soulie et al. 2006's form of Mikami's regression), V^ = " + format_short(vhat, 4) +
