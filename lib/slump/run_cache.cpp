@@ -5,50 +5,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/version.hpp"
-#include "dem/law_parts.hpp"
 #include "io/atomic_file.hpp"
 #include "io/particle_state.hpp"
+#include "slump/scene_text.hpp"
 
 namespace demscale::slump {
 
 namespace {
-
-// Part of every key: bump it whenever a change to the engine or the protocol changes results, so
-// runs cached by older code are not reused.
-// 2: history carries the energy ledger; 3: repose flank above the foot; 4: poured fills, quantile
-// rest criterion, fill measures and motion at the end; 5: law parameters keyed from their tables.
-constexpr int cache_format = 5;
-
-std::string canonical(const SlumpScene& s, std::span<const dem::LawPart> parts) {
-    std::string t;
-    auto add = [&t](std::string_view name, double v) {
-        char b[160];
-        std::snprintf(b, sizeof b, "%.*s=%.17g\n", static_cast<int>(name.size()), name.data(), v);
-        t += b;
-    };
-    t += std::string("demscale=") + version + "\ncache=" + std::to_string(cache_format) + "\n";
-    add("bottom", s.bottom_diameter_m), add("top", s.top_diameter_m), add("height", s.height_m);
-    add("lift_speed", s.lift_speed_m_per_s), add("lift_height", s.lift_height_m);
-    add("radius", s.radius_m), add("fill", s.fill_height_m), add("seed", s.seed), add("density", s.material.density);
-    if (s.rough_floor) add("rough_floor", s.rough_floor_diameter_m);
-    // Which laws act, then the parameters of each part that acts, from its table: a part that does
-    // not act leaves no trace (a dry run has no liquid: the coarse runs of every k share one key).
-    add("rolling", s.rolling_resistance), add("rolling_model", static_cast<double>(s.rolling_model));
-    add("wet", s.wet), add("wet_walls", s.wet_walls);
-    if (s.wet) add("variant", static_cast<double>(s.bridge.variant)), add("rupture", static_cast<double>(s.bridge.rupture));
-    // The exact curves (added after format 5): a line only where one acts, so the keys of fitted
-    // scenes stay as they were.
-    if (s.wet && s.particle_curve == bridge::CurveSource::exact) add("particle_curve_exact", 1);
-    if (s.wet && s.wet_walls && s.wall_curve == bridge::CurveSource::exact) add("wall_curve_exact", 1);
-    for (const auto& part : parts)
-        if (part.active(s))
-            for (const auto& p : part.parameters) add(p.key, p.get(s));
-    add("dt", s.dt_s), add("g", s.gravity), add("settle", s.settle_time_s), add("spread", s.spread_time_s);
-    add("rest_speed", s.rest_speed_m_per_s), add("rest_duration", s.rest_duration_s), add("skin", s.skin_m);
-    add("fill_kind", static_cast<double>(s.fill)), add("pour_time", s.pour_time_s), add("rest_quantile", s.rest_quantile);
-    return t;
-}
 
 // One history sample as a flat array: time, height, spread, then the ledger field by field.
 nlohmann::json history_row(const TimePoint& h) {
@@ -72,7 +35,7 @@ TimePoint history_point(const nlohmann::json& a) {
 
 std::string scene_key(const SlumpScene& s, std::span<const dem::LawPart> parts) {
     std::uint64_t h = 14695981039346656037ull;
-    for (unsigned char c : canonical(s, parts)) h = (h ^ c) * 1099511628211ull;
+    for (unsigned char c : scene_text(s, parts)) h = (h ^ c) * 1099511628211ull;
     char b[17];
     std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
     return b;

@@ -13,7 +13,7 @@
 
 namespace demscale::slump {
 
-// 16 hex digits (FNV-1a 64 of the scene's canonical text; the scene's name and source path excluded).
+// 16 hex digits: FNV-1a 64 of the scene's text (slump/scene_text.hpp; name and source path excluded).
 std::string scene_key(const SlumpScene& s, std::span<const dem::LawPart> parts = dem::law_parts());
 
 class RunCache {
