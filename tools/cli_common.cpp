@@ -37,11 +37,35 @@ void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& w
     c->add_option("--format", o.format, "text | markdown | csv | json")->capture_default_str();
     c->add_flag("--no-png", o.no_png, "no figures (gnuplot scripts only)");
     c->add_flag("--force-dt", o.force_dt, "accept a time step above 0.2 x the Rayleigh time");
+    add_backend_options(c, o.slurm);
+}
+
+void add_backend_options(CLI::App* c, SlurmOptions& o) {
+    c->add_option("--backend", o.backend, "where the slump runs go: local, or slurm (a job array; run again to collect)")
+        ->capture_default_str();
+    c->add_option("--sbatch-option", o.sbatch_options, "with --backend slurm: an #SBATCH line, e.g. --sbatch-option=--partition=short")
+        ->allow_extra_args(false);
+    c->add_flag("--wait", o.wait, "with --backend slurm: wait for the runs and go on, instead of exiting 5 until they are done");
+}
+
+std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o, bool has_cache) {
+    if (o.backend == "local") {
+        if (!o.sbatch_options.empty() || o.wait) throw InputError("--backend", "local", "slurm, with --sbatch-option or --wait");
+        return std::nullopt;
+    }
+    if (o.backend != "slurm") throw InputError("--backend", o.backend, "local or slurm");
+    if (!has_cache) throw InputError("--backend", "slurm", "a cache folder (drop --no-cache): the Slurm tasks hand their results back through it");
+    slump::SlurmSettings s;
+    s.executable = std::filesystem::read_symlink("/proc/self/exe");  // the tasks run this very build
+    s.sbatch_options = o.sbatch_options;
+    s.wait = o.wait;
+    return s;
 }
 
 BatchSettings batch_settings(const StudyRunOptions& o) {
     const auto par = parallelism(o.jobs, o.threads);
-    return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt};
+    return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt,
+            slurm_settings(o.slurm, !o.no_cache)};
 }
 
 io::TableConfig load_config(const std::string& path) {

@@ -13,6 +13,7 @@
 #include "io/table_config.hpp"
 #include "io/table_format.hpp"
 #include "slump/slump_scene.hpp"
+#include "slump/slurm_backend.hpp"
 
 namespace demscale::cli {
 
@@ -73,6 +74,16 @@ struct Parallelism {
 };
 Parallelism parallelism(int jobs, int threads);
 
+// Where slump runs go: here (the default), or to Slurm as a job array (slump/slurm_backend.hpp).
+struct SlurmOptions {
+    std::string backend = "local";
+    std::vector<std::string> sbatch_options;
+    bool wait = false;
+};
+void add_backend_options(CLI::App* c, SlurmOptions& o);
+// None for the local backend; InputError for an unknown backend or Slurm without a cache.
+std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o, bool has_cache);
+
 // What every command that runs slump ensembles shares: how runs go side by side, the cache,
 // where tables and figures go. add_study_run_options registers the options; batch_options turns
 // them into the runner's settings.
@@ -82,6 +93,7 @@ struct StudyRunOptions {
     bool no_cache = false, no_png = false, force_dt = false;
     std::string out_dir = default_plots;
     std::string format = "text";
+    SlurmOptions slurm;
 };
 void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out);
 // The runner's settings from the options; Parallelism from jobs and threads as parallelism() does.
@@ -89,6 +101,7 @@ struct BatchSettings {
     int jobs, threads_per_job;
     std::optional<std::string> cache_dir;
     bool force_dt;
+    std::optional<slump::SlurmSettings> slurm;
 };
 BatchSettings batch_settings(const StudyRunOptions& o);
 
@@ -111,5 +124,6 @@ std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggg
 std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
 std::vector<Command> estimate_commands(CLI::App& app);    // estimate-exponent
 std::vector<Command> report_commands(CLI::App& app);      // report
+std::vector<Command> cluster_commands(CLI::App& app);     // cached-run (what a Slurm task runs)
 
 }  // namespace demscale::cli

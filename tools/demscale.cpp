@@ -1,5 +1,6 @@
 // demscale — command-line front end. Parses arguments, calls lib/, prints. No physics here.
 // Exit codes: 0 success, 1 regression drift, 2 bad input, 3 runtime failure (I/O, gnuplot, solver),
+// 5 runs handed to Slurm and not finished yet (run the same command again to collect them),
 // 130 interrupted by SIGINT/SIGTERM (state checkpointed where the command supports resuming).
 #include <iostream>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
 #include "git_revision.hpp"
+#include "slump/run_batch.hpp"
 
 int main(int argc, char** argv) {
     using namespace demscale;
@@ -21,6 +23,7 @@ int main(int argc, char** argv) {
     for (auto& c : cli::study_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::estimate_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::report_commands(app)) commands.push_back(std::move(c));
+    for (auto& c : cli::cluster_commands(app)) commands.push_back(std::move(c));
 
     try {
         app.parse(argc, argv);
@@ -34,6 +37,9 @@ int main(int argc, char** argv) {
     try {
         for (auto& c : commands)
             if (*c.app) return c.run();
+    } catch (const slump::RunsPending& e) {
+        std::cerr << "demscale: " << e.what() << "\n";
+        return 5;
     } catch (const Interrupted& e) {
         std::cerr << "demscale: " << e.what() << (e.checkpoint().empty() ? "" : "; checkpoint: " + e.checkpoint()) << "\n";
         return 130;

@@ -34,6 +34,7 @@ slump::ResponsePlan plan_from(const Options& o) {
     const auto b = batch_settings(o.run);
     plan.batch.jobs = b.jobs, plan.batch.threads_per_job = b.threads_per_job, plan.batch.force_dt = b.force_dt;
     if (b.cache_dir) plan.batch.cache_dir = *b.cache_dir;
+    plan.batch.slurm = b.slurm;
     return plan;
 }
 

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs demscale's build and run dependencies from Debian's archive.
+# Installs demscale's build and run dependencies from Debian's archive; with --tests, also what the
+# test suite uses beyond them: Slurm's daemons and client with munge, for the test that runs a
+# study through a real single-node Slurm (the test starts and stops the daemons itself).
 # Idempotent and silent when everything is present; works as root or through sudo.
 set -euo pipefail
 
@@ -13,6 +15,11 @@ packages=(
   nlohmann-json3-dev        # --format json
   libcli11-dev              # command-line subcommands
 )
+if [ "${1:-}" = --tests ]; then
+  packages+=(slurmctld slurmd slurm-client munge)  # the Slurm backend's test (tests/cluster/slurm_test.sh)
+elif [ $# -gt 0 ]; then
+  echo "usage: $0 [--tests]" >&2; exit 2
+fi
 
 missing=()
 for p in "${packages[@]}"; do

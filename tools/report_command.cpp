@@ -21,6 +21,7 @@ struct Options {
     std::string estimate_sf, estimate_range = "0.5,4";
     int estimate_levels = 0;               // 0: 4, or 3 with --quick
     int estimate_seeds = 0;                // 0: the report's --seeds
+    SlurmOptions slurm;
 };
 
 int run_report(const Options& o) {
@@ -38,6 +39,7 @@ int run_report(const Options& o) {
     if (!o.no_cache) r.cache_dir = o.cache;
     const auto par = parallelism(o.jobs, o.threads);
     r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
+    r.slurm = slurm_settings(o.slurm, !o.no_cache);
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
     r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
     r.git_revision = demscale::git_revision;  // the build's, refreshed at every build
@@ -75,6 +77,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_option("--seeds", o->seeds, "runs per ensemble, fine and each (S_f, k) (default 8; --quick: 3)");
     c->add_option("--jobs", o->jobs, "slump runs side by side (default: one per core)");
     c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
+    add_backend_options(c, o->slurm);
     c->add_flag("--estimate", o->estimate, "add the measured exponent: response curves and k-hat (costs the most; see estimate-exponent)");
     c->add_option("--estimate-sf", o->estimate_sf, "scale factors of the measured exponent (default 1.4,1.96; --quick: 1.4)");
     c->add_option("--estimate-range", o->estimate_range, "lowest and highest surface tension factor of its fine curve")->capture_default_str();

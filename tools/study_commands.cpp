@@ -46,6 +46,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     const auto b = batch_settings(o.run);
     plan.jobs = b.jobs, plan.threads_per_job = b.threads_per_job, plan.force_dt = b.force_dt;
     if (b.cache_dir) plan.cache_dir = *b.cache_dir;
+    plan.slurm = b.slurm;
     plan.seeds = o.seeds;
     return plan;
 }

@@ -141,6 +141,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.tolerances = scene.tolerances;
     plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
     plan.cache_dir = o.cache_dir;
+    plan.slurm = o.slurm;
     plan.seeds = o.seeds;
     plan.live = o.live;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
@@ -149,8 +150,23 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         response = *o.estimate;
         response->fine = scene;
         response->batch.jobs = o.jobs, response->batch.threads_per_job = o.threads_per_job, response->batch.cache_dir = o.cache_dir;
+        response->batch.slurm = o.slurm;
         response->batch.live = o.live;
         slump::validate_response_plan(*response);
+    }
+
+    // On Slurm, every slump run of the report goes in one submission and comes back in one call,
+    // before anything is written; the sections below then read them all from the cache.
+    if (o.slurm) {
+        auto study_runs = slump::plan_study(plan);
+        auto all = study_runs.all_runs();
+        std::optional<slump::ResponseStudy> response_runs;
+        if (response) {
+            response_runs = slump::plan_response_runs(*response);
+            for (auto* r : response_runs->all_runs()) all.push_back(r);
+        }
+        slump::run_batch(all, {o.jobs, o.threads_per_job, o.cache_dir, plan.force_dt, scene.radius_m, o.live, o.slurm},
+                         [&](const std::string& s) { say("slump: " + s); });
     }
 
     Document doc;

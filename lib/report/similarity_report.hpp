@@ -28,6 +28,7 @@ struct ReportOptions {
     std::filesystem::path out_dir;
     std::optional<std::filesystem::path> cache_dir;
     int jobs = 1, threads_per_job = 1;
+    std::optional<slump::SlurmSettings> slurm;  // the slump runs go to Slurm (slump/slurm_backend.hpp)
     int seeds = 8;                          // runs per ensemble, fine and coarse
     std::string git_revision;               // shown in the inputs
     std::function<void(const std::string&)> live;  // slump runs in progress (slump::BatchOptions::live)

@@ -101,6 +101,16 @@ void validate_response_plan(const ResponsePlan& plan) {
     for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, 0, {}}), plan.batch.force_dt);
 }
 
+std::vector<StudyRun*> ResponseStudy::all_runs() {
+    std::vector<StudyRun*> all;
+    for (auto& e : fine)
+        for (auto& r : e.runs) all.push_back(&r);
+    for (auto& levels : coarse)
+        for (auto& e : levels)
+            for (auto& r : e.runs) all.push_back(&r);
+    return all;
+}
+
 ResponseStudy plan_response_runs(const ResponsePlan& plan) {
     validate_response_plan(plan);
     ResponseStudy study;
@@ -118,12 +128,7 @@ ResponseStudy plan_response_runs(const ResponsePlan& plan) {
 ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log) {
     const auto start = std::chrono::steady_clock::now();
     ResponseStudy study = plan_response_runs(plan);
-    std::vector<StudyRun*> all;
-    for (auto& e : study.fine)
-        for (auto& r : e.runs) all.push_back(&r);
-    for (auto& levels : study.coarse)
-        for (auto& e : levels)
-            for (auto& r : e.runs) all.push_back(&r);
+    const auto all = study.all_runs();
     BatchOptions batch = plan.batch;
     batch.reference_radius_m = plan.fine.radius_m;
     run_batch(all, batch, log);

@@ -48,6 +48,7 @@ struct ResponseStudy {
     bool wet = true;
     std::vector<ResponseEnsemble> fine;                 // per level, ascending γ
     std::vector<std::vector<ResponseEnsemble>> coarse;  // per S_f (plan order), per level
+    std::vector<StudyRun*> all_runs();                  // fine, then coarse
     stats::ResponseCurve fine_curve;                    // slump over height against ln γ
     std::vector<stats::ResponseCurve> coarse_curves;
     std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only)

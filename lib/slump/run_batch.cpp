@@ -10,6 +10,7 @@
 #include <omp.h>
 #include <thread>
 
+#include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 
 namespace demscale::slump {
@@ -37,6 +38,8 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
         r->key = scene_key(r->scene);
         unique.emplace(r->key, r);
     }
+    if (o.slurm && !o.cache_dir)
+        throw InputError("--backend", "slurm", "a cache folder (drop --no-cache): the Slurm tasks hand their results back through it");
     std::optional<RunCache> cache;
     if (o.cache_dir) cache.emplace(*o.cache_dir);
     std::vector<StudyRun*> pending;
@@ -54,8 +57,19 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
               [&](const StudyRun* a, const StudyRun* b) { return expected_cost(*a, radius) > expected_cost(*b, radius); });
     if (log)
         log(std::to_string(unique.size()) + " distinct runs, " + std::to_string(unique.size() - pending.size()) + " cached, " +
-            std::to_string(pending.size()) + " to run (" + std::to_string(o.jobs) + " at a time, " +
-            std::to_string(o.threads_per_job) + " thread(s) each)");
+            std::to_string(pending.size()) + " to run (" + (o.slurm ? std::string("on Slurm") : std::to_string(o.jobs) + " at a time") +
+            ", " + std::to_string(o.threads_per_job) + " thread(s) each)");
+
+    if (o.slurm && !pending.empty()) {
+        std::vector<SlurmRun> handed;
+        for (const auto* r : pending) handed.push_back({r->key, &r->scene});
+        const auto round = submit_to_slurm(handed, *cache, o.threads_per_job, o.force_dt, *o.slurm, log);
+        if (!o.slurm->wait)
+            throw RunsPending(round.summary() + "; run the same command again to collect them (squeue shows the queue)");
+        wait_for_slurm(handed, *cache, *o.slurm, log);
+        for (auto* r : pending) r->result = *cache->load(r->key), r->from_cache = true;
+        pending.clear();
+    }
 
     // Time left: each run not started yet is predicted by the finished runs of its ensemble (the
     // same scene but the seed: a standing column rests much later than a slumping one of the same

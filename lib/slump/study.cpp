@@ -45,8 +45,15 @@ void validate_plan(const StudyPlan& plan) {
         for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, k, plan.scaled}), plan.force_dt);
 }
 
-Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {
-    const auto start = std::chrono::steady_clock::now();
+std::vector<StudyRun*> Study::all_runs() {
+    std::vector<StudyRun*> all = {&reference};
+    for (auto& r : replicas) all.push_back(&r);
+    for (auto& r : runs) all.push_back(&r);
+    for (auto& r : coarse_seeds) all.push_back(&r);
+    return all;
+}
+
+Study plan_study(const StudyPlan& plan) {
     validate_plan(plan);
     Study study;
     study.tolerances = plan.tolerances;
@@ -65,12 +72,15 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
             for (int i = 1; i < plan.seeds; ++i) study.coarse_seeds.push_back(with_seed(r, i));
             study.runs.push_back(std::move(r));
         }
+    return study;
+}
+
+Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {
+    const auto start = std::chrono::steady_clock::now();
+    Study study = plan_study(plan);
     // S_f = 1 is the reference for every k; equal scenes run once.
-    std::vector<StudyRun*> all = {&study.reference};
-    for (auto& r : study.replicas) all.push_back(&r);
-    for (auto& r : study.runs) all.push_back(&r);
-    for (auto& r : study.coarse_seeds) all.push_back(&r);
-    run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m, plan.live}, log);
+    const auto all = study.all_runs();
+    run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m, plan.live, plan.slurm}, log);
 
     double reach = 0;  // the reference's radial grid covers every pile of the study
     for (const auto* r : all) reach = std::max(reach, r->result.final.spread_max);

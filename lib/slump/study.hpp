@@ -29,6 +29,7 @@ struct StudyPlan {
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
     std::function<void(const std::string&)> live;  // the runs in progress (BatchOptions::live)
+    std::optional<SlurmSettings> slurm;            // hand the runs to Slurm (BatchOptions::slurm)
 };
 
 struct Study {
@@ -44,12 +45,16 @@ struct Study {
     stats::Verdict overall() const;     // FAIL if any ensemble fails, else INCONCLUSIVE if any is, else PASS
     std::vector<const SlumpResult*> fine_ensemble() const;
     std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds
+    std::vector<StudyRun*> all_runs();  // reference, replicas, runs, coarse_seeds
     // The verdict with the smallest profile distance at this S_f, over the exponents.
     const EnsembleVerdict& best_at(double sf) const;
 };
 
 // Throws InputError for a bad plan: jobs, threads, replicas, exponents, any coarse scene.
 void validate_plan(const StudyPlan& plan);
+
+// The study's runs, not run yet (results empty), after validate_plan.
+Study plan_study(const StudyPlan& plan);
 
 // Validates the whole plan (every coarse scene) before running anything. Progress lines go to log.
 // Throws InputError for a bad plan and std::runtime_error when a run fails.
