@@ -11,10 +11,12 @@
 #include "bridge/validity.hpp"
 #include "bridge/young_laplace.hpp"
 #include "cli_common.hpp"
+#include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "io/bridge_table_file.hpp"
 #include "io/atomic_file.hpp"
 #include "report/bridge_error_files.hpp"
+#include "slump/size_sweep.hpp"
 #include "slump/slump_run.hpp"
 #include <omp.h>
 
@@ -34,6 +36,8 @@ struct Options {
     bool quick = false, no_png = false, dem = false;
     std::string scene = shipped("scenes/small_wet.toml");
     double seconds = 0.2;
+    std::string sizes;     // bench --dem --sizes: the size sweep
+    int size_steps = 100;
 };
 
 // The exact solution's row: force, rupture, whether a bridge exists, and its shape; an
@@ -199,7 +203,46 @@ int run_dem_bench(const Options& o) {
     return 0;
 }
 
+// The size sweep: for each size, dry and wet (the scene's liquid), particles in the lattice's order
+// and shuffled; each rate against the smallest size's of the same laws and order.
+int run_size_sweep(const Options& o) {
+    const auto scene = load_scene(o.scene);
+    const auto sizes = parse_number_list(o.sizes, "--sizes", 99, 2e7);
+    if (o.size_steps < 10 || o.size_steps > 100000) throw InputError("--steps", std::to_string(o.size_steps), "10 to 100000");
+    io::Table t;
+    t.title = "DEM cost as the work grows: the scene's cone scaled to each size, packed to touching, stepped from rest";
+    const auto load = load_average();
+    t.metadata = {{"scene", display_path(o.scene)},
+                  {"threads", std::to_string(omp_get_max_threads())},
+                  {"load average before", load ? format_short(*load, 3) : "unknown"},
+                  {"timed", "the difference of runs of " + std::to_string(o.size_steps) + " and " + std::to_string(3 * o.size_steps) +
+                                " steps (set-up excluded)"}};
+    t.columns = {"laws", "order", "particles", "steps", "wall_s", "particle_steps_per_s", "rate_vs_smallest", "peak_bytes_per_particle"};
+    for (const bool wet : {false, true})
+        for (const bool shuffled : {false, true}) {
+            auto s = scene;
+            s.wet = wet;
+            double smallest = 0;
+            for (double n : sizes) {
+                std::cerr << "size sweep: " << (wet ? "wet" : "dry") << (shuffled ? ", shuffled" : "") << ", about " << n
+                          << " particles ..." << std::endl;
+                const auto point = slump::time_size(s, n, o.size_steps, shuffled);
+                if (smallest == 0) smallest = point.particle_steps_per_s;
+                const bool timed = point.particle_steps_per_s > 0 && smallest > 0;  // else the set-up's noise exceeded the steps
+                const io::Cell untimed(std::string("- (more --steps)"));
+                t.rows.push_back({wet ? "hertz+mindlin+mikami" : "hertz+mindlin", shuffled ? "shuffled" : "lattice", double(point.particles),
+                                  double(point.steps), point.wall_s, timed ? io::Cell(point.particle_steps_per_s) : untimed,
+                                  timed ? io::Cell(point.particle_steps_per_s / smallest) : untimed,
+                                  point.peak_bytes_per_particle > 0 ? io::Cell(point.peak_bytes_per_particle) : io::Cell(std::string("-"))});
+            }
+        }
+    std::cout << io::render(t, io::parse_format(o.format, "--format"));
+    return 0;
+}
+
 int run_bench(const Options& o) {
+    if (o.dem && !o.sizes.empty()) return run_size_sweep(o);
+    if (!o.sizes.empty()) throw InputError("--sizes", o.sizes, "with --dem (the size sweep benchmarks the DEM engine)");
     if (o.dem) return run_dem_bench(o);
     io::Table t;
     t.title = "Cost of one bridge force evaluation (median of 5 runs, one pair type: per-pair setup cached)";
@@ -252,6 +295,8 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(finite_positive);
     bench->add_flag("--dem", o->dem, "benchmark the DEM engine instead: the lift-and-spread phase of one settled scene under each law combination");
     bench->add_option("--scene", o->scene, "scene for --dem (default: data/scenes/small_wet.toml)");
+    bench->add_option("--sizes", o->sizes, "with --dem: the size sweep, particle counts, e.g. 5e3,1e4,1e5,1e6 (the scene's cone scaled)");
+    bench->add_option("--steps", o->size_steps, "with --sizes: steps per timing unit (runs of N and 3N steps)")->capture_default_str();
     bench->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
     bench->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
 

@@ -168,7 +168,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
         if (!phases.start) st.settled = rest("settle", s.settle_time_s);
         st.settle_end = sim.time();
-        st.fill = measure_fill(sim.particles(), s);
+        if (phases.fill_measures) st.fill = measure_fill(sim.particles(), s);
         st.initial_height = measure_pile(sim.particles(), lone_sphere_top(s)).height;
         if (phases.settle_only) {
             res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;

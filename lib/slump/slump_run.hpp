@@ -68,6 +68,7 @@ struct SlumpResult {
 struct SlumpPhases {
     bool settle_only = false;
     bool energy_ledger = false;
+    bool fill_measures = true;  // false: no fill measures (about 140 sample points per sphere); the size sweep's runs
     const dem::Particles* start = nullptr;  // settled state: skip fill and settle
     std::filesystem::path checkpoint, resume;
 };

@@ -206,6 +206,15 @@ case $case_name in
     "$demscale" slump --scene "$work/exact.toml" --format json --no-png --out "$work/y" >"$work/fit.json" 2>"$work/fit.err" || fail "fit walls failed"
     grep -q '"wall_bridge_law": "mikami1998"' "$work/fit.json" || fail "fit wall law not named"
     grep -q "warning: particle-wall bridges: Mikami's sphere-wall fit pulls" "$work/fit.err" || fail "no wall-fit warning" ;;
+  bench_size_sweep)
+    # The size sweep's table: dry and wet, lattice order and shuffled, for each size; bad sizes refused.
+    expect 0 '^laws,order,particles,steps,wall_s,particle_steps_per_s,rate_vs_smallest,peak_bytes_per_particle$' -- \
+      "$demscale" bench --dem --sizes 300,600 --steps 10 --format csv
+    [ "$(grep -c '^hertz+mindlin\(+mikami\)\?,\(lattice\|shuffled\),' "$work/out")" -eq 8 ] || { cat "$work/out" >&2; fail "not 8 rows"; }
+    grep -qi 'nan\|inf' "$work/out" && fail "NaN or inf in the sweep"
+    expect 2 '--sizes = 300: accepted with --dem' -- "$demscale" bench --sizes 300
+    expect 2 '--sizes = "5e7".*\(99, 2e\+07\)' -- "$demscale" bench --dem --sizes 5e7
+    expect 2 '--steps = 5: accepted 10 to 100000' -- "$demscale" bench --dem --sizes 300 --steps 5 ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
