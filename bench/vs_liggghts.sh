@@ -29,16 +29,8 @@ trap 'rm -rf "$work"' EXIT
 echo "scene: $scene; work folder: $work" >&2
 build/demscale export liggghts --scene "$scene" --out "$work/lig" >/dev/null 2>&1
 
-json() { sed -n "s/^ *\"$2\": \\([^,]*\\),\\?$/\\1/p" "$1" | head -1; }
+. bench/measure.sh  # busy, median, json
 rounds=${ROUNDS:-2} busy_limit=${BUSY_LIMIT:-0.3}
-# Cores busy with other work over 2 s (from /proc/stat: non-idle jiffies over all, times the cores).
-busy() {
-  local first second
-  first=$(head -1 /proc/stat); sleep 2; second=$(head -1 /proc/stat)
-  printf '%s\n%s\n' "$first" "$second" | awk -v n="$(nproc)" '
-    {t = 0; for (i = 2; i <= NF; i++) t += $i; total[NR] = t; idle[NR] = $5 + $6}
-    END {printf "%.2f", n * (1 - (idle[2] - idle[1]) / (total[2] - total[1]))}'
-}
 run_demscale() {  # threads round
   OMP_NUM_THREADS=$1 build/demscale slump --scene "$scene" --start "$work/lig/settled.csv" --fixed-time \
     --format json --out "$work/ds$1_$2" --no-png >"$work/ds$1_$2.json" 2>/dev/null
@@ -75,7 +67,6 @@ echo "final pile, demscale (1 thread):"
 grep -E '"(final_height_mm|spread_d95_mm|spread_max_mm|repose_angle_deg)"' "$work/ds1_1.json"
 echo "final pile, liggghts (1 rank), measured by demscale:"
 build/demscale pile --dump "$work/lig/final1.dump" --scene "$scene" | grep -E 'height|spread|repose'
-median() { echo "$1" | tr ' ' '\n' | grep . | sort -g | awk '{v[NR] = $1} END {if (NR == 0) print "none"; else printf "%.2f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 echo "pairs without other work: 1 thread: ${ratios[1]:-none}; 2 threads: ${ratios[2]:-none}"
 echo "ratio_dry_2threads=$(median "${ratios[2]:-}")"
 echo "ratio_dry_1thread=$(median "${ratios[1]:-}")"

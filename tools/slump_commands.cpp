@@ -118,6 +118,8 @@ int run_slump_command(const Options& o) {
     j["critical_dt_s"] = r.critical_dt;
     j["wall_s"] = r.wall_s;
     j["particle_steps_per_s"] = r.particle_steps() / r.wall_s;  // pour included, as in wall_s
+    // The thread governor's choice over the lift and spread (0 and 0 on one thread).
+    j["thread_windows"] = {{"all_threads", r.windows_all_threads}, {"one_thread", r.windows_one_thread}};
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
     j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
     j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge

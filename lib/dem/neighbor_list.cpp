@@ -73,10 +73,19 @@ void NeighborList::build(const Particles& p) {
 bool NeighborList::needs_rebuild(const Particles& p) const {
     if (built_at_.size() != p.size()) return true;
     double first = 0, second = 0;  // the two largest squared displacements, m²
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const double moved = (p.position[i] - built_at_[i]).squaredNorm();
-        if (moved > first) second = first, first = moved;
-        else if (moved > second) second = moved;
+    auto keep = [](double moved, double& top, double& next) {
+        if (moved > top) next = top, top = moved;
+        else if (moved > next) next = moved;
+    };
+    const long n = static_cast<long>(p.size());
+    // Each thread's two largest, then the largest two of those: the same two values in any order.
+#pragma omp parallel if (n > parallel_threshold)
+    {
+        double top = 0, next = 0;
+#pragma omp for schedule(static) nowait
+        for (long i = 0; i < n; ++i) keep((p.position[i] - built_at_[i]).squaredNorm(), top, next);
+#pragma omp critical
+        keep(top, first, second), keep(next, first, second);
     }
     // The margin keeps rounding on the safe side.
     return std::sqrt(first) + std::sqrt(second) > skin_ * (1.0 - 1e-9);

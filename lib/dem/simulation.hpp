@@ -7,6 +7,7 @@
 // thread count). SI units.
 #pragma once
 
+#include <chrono>
 #include <cmath>
 #include <istream>
 #include <omp.h>
@@ -21,6 +22,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/energy_ledger.hpp"
 #include "dem/neighbor_list.hpp"
+#include "dem/thread_governor.hpp"
 #include "dem/pair_contacts.hpp"
 #include "dem/wall_contacts.hpp"
 #include "dem/walls.hpp"
@@ -42,11 +44,16 @@ public:
         compute_forces();
     }
 
-    // One velocity-Verlet step: half kick, drift, forces, half kick.
+    // One velocity-Verlet step: half kick, drift, forces, half kick. On the threads the governor
+    // chose (thread_governor.hpp); the caller's thread count is restored after the step.
     void step() {
+        const ThreadsForStep threads(governor_);
         half_kick();
-        double probe = 0;  // NaN or inf anywhere makes the sum non-finite: one check per step
-        for (std::size_t i = 0; i < p_.size(); ++i) p_.position[i] += dt_ * p_.velocity[i], probe += p_.position[i].sum();
+        // NaN or inf anywhere makes the sum non-finite (in any order): one check per step.
+        double probe = 0;
+        const long n = static_cast<long>(p_.size());
+#pragma omp parallel for schedule(static) reduction(+ : probe) if (n > parallel_threshold)
+        for (long i = 0; i < n; ++i) p_.position[i] += dt_ * p_.velocity[i], probe += p_.position[i].sum();
         if (!std::isfinite(probe))
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
@@ -56,6 +63,8 @@ public:
         time_ += dt_;
         ++steps_;
     }
+
+    const ThreadGovernor& governor() const { return governor_; }
 
     const Particles& particles() const { return p_; }
     Particles& particles() { return p_; }  // to move particles or set velocities; masses stay as built
@@ -147,6 +156,23 @@ public:
 private:
     static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-5";
 
+    // Sets the governor's thread count for one step and restores the caller's after it (also when
+    // the step throws), then reports the step's end to the governor.
+    struct ThreadsForStep {
+        ThreadGovernor& governor;
+        int outer = omp_get_max_threads();
+        explicit ThreadsForStep(ThreadGovernor& g) : governor(g) {
+            if (governor.active()) omp_set_num_threads(governor.threads());
+        }
+        ~ThreadsForStep() {
+            if (!governor.active()) return;
+            omp_set_num_threads(outer);
+            governor.stepped(std::chrono::steady_clock::now());
+        }
+        ThreadsForStep(const ThreadsForStep&) = delete;
+        ThreadsForStep& operator=(const ThreadsForStep&) = delete;
+    };
+
     // What the particles' radii and masses give, once (the same bits as computing it where used):
     // ½dt/m and ½dt/I for half_kick, s/kg and s/(kg m²), and each particle's shape against a wall.
     void index_particles() {
@@ -156,7 +182,9 @@ private:
     }
 
     void half_kick() {
-        for (std::size_t i = 0; i < p_.size(); ++i) {
+        const long n = static_cast<long>(p_.size());
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+        for (long i = 0; i < n; ++i) {
             if (p_.fixed[i]) continue;
             p_.velocity[i] += kick_[i].translation * p_.force[i];
             p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
@@ -170,12 +198,15 @@ private:
 
     void compute_forces() {
         ledger_.begin_step(omp_get_max_threads());
-        for (std::size_t i = 0; i < p_.size(); ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+        const long n = static_cast<long>(p_.size());
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+        for (long i = 0; i < n; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
         pair_contacts_.add_forces(p_, law_, dt_, ledger_);
         wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, steps_, ledger_);
         ledger_.end_step(dt_);
-        double probe = 0;  // NaN or inf in any force or torque makes the sum non-finite: one check per step
-        for (std::size_t i = 0; i < p_.size(); ++i) probe += p_.force[i].sum() + p_.torque[i].sum();
+        double probe = 0;  // NaN or inf in any force or torque makes the sum non-finite (in any order)
+#pragma omp parallel for schedule(static) reduction(+ : probe) if (n > parallel_threshold)
+        for (long i = 0; i < n; ++i) probe += p_.force[i].sum() + p_.torque[i].sum();
         if (!std::isfinite(probe))  // find it (a sum of huge finite values may overflow: then none is found)
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i, "force on"));
@@ -209,6 +240,8 @@ private:
     EnergyLedger<Ledger> ledger_;
     double time_ = 0;
     std::size_t steps_ = 0;
+    // The ledger sums per thread: a run that books it keeps one thread count (bit-identical ledger).
+    ThreadGovernor governor_{Ledger ? 1 : omp_get_max_threads()};
 };
 
 }  // namespace demscale::dem

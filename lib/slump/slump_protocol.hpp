@@ -204,6 +204,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.steps = sim.steps();
     res.final = measure_pile(sim.particles(), lone_sphere_top(s));
     res.final_state = sim.particles().mobile();
+    res.windows_all_threads = sim.governor().windows(true), res.windows_one_thread = sim.governor().windows(false);
     res.wall_s = wall_time();
     return res;
 }

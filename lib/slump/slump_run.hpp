@@ -46,6 +46,9 @@ struct SlumpResult {
     std::size_t pour_steps = 0;
     double rest_since = -1;             // s: when the final rest window began; −1: not at rest
     MotionSummary motion;               // what still moved at the end
+    // The thread governor's windows (dem/thread_governor.hpp) of the lift and spread: on all the
+    // run's threads and on one; both 0 when it had one thread. Not cached (speed, not physics).
+    std::size_t windows_all_threads = 0, windows_one_thread = 0;
     PileMeasures final;
     std::vector<TimePoint> history;  // at the start, then every 5 ms
     dem::Particles final_state;

@@ -1,0 +1,42 @@
+#include "dem/thread_governor.hpp"
+
+namespace demscale::dem {
+
+void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
+    if (!active()) return;
+    if (!started_) {  // the first step's time includes the engine's set-up: not counted
+        started_ = true, window_start_ = now, window_steps_ = 0;
+        return;
+    }
+    ++window_steps_;
+    const double elapsed = std::chrono::duration<double>(now - window_start_).count();
+    if (window_steps_ < 20 || elapsed < 0.2) return;
+    const bool all = current_ == most_;
+    const double per_step = elapsed / static_cast<double>(window_steps_);
+    per_step_[all] = per_step, ++windows_[all];
+    window_start_ = now, window_steps_ = 0;
+    const int other = all ? 1 : most_;
+    switch (stage_) {
+    case Stage::settled:
+        // Probe after probe_every windows, or now if this one slowed down by half.
+        if (++settled_windows_ >= probe_every || (last_settled_ > 0 && per_step > 1.5 * last_settled_))
+            stage_ = Stage::probe, before_ = per_step, current_ = other;
+        last_settled_ = per_step;
+        return;
+    case Stage::probe:  // back to the settled mode for one window: its time on both sides of the probe
+        stage_ = Stage::confirm, probe_ = per_step, current_ = other;
+        return;
+    case Stage::confirm: {
+        // The probe against the mean of the windows around it (a cost that drifts over the run
+        // cancels); one thread only when 5 % faster, so a window's noise is not taken for contention.
+        const double settled = 0.5 * (before_ + per_step);
+        const bool probe_was_all = !all;
+        const double one = probe_was_all ? settled : probe_, many = probe_was_all ? probe_ : settled;
+        current_ = one < 0.95 * many ? 1 : most_;
+        stage_ = Stage::settled, settled_windows_ = 0, last_settled_ = 0;
+        return;
+    }
+    }
+}
+
+}  // namespace demscale::dem

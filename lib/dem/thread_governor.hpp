@@ -1,0 +1,47 @@
+// Choosing, window by window, between all the threads a run was given and one. On a machine where
+// another job holds a core, threads that wait for each other at every step's barriers can run many
+// times slower than one thread (docs/performance.md: 23 s quiet, 182 s with one core busy). The
+// governor times windows of steps (at least 0.2 s and 20 steps) in the mode it chose, and every
+// `probe_every` windows, or at once when a window runs 1.5 times slower than the last, times one
+// window in the other mode, then one more in its own, and keeps one thread only when the probe
+// was 5 % faster than the mean of the windows around it (a cost that drifts over a run cancels).
+// It starts settled on all threads and probes after its first window. Trajectories do not depend on the thread count
+// (simulation.hpp), so the choice changes only the speed.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+
+namespace demscale::dem {
+
+class ThreadGovernor {
+public:
+    static constexpr int probe_every = 24;
+
+    // threads: what the run was given; 1 turns the governor off.
+    explicit ThreadGovernor(int threads) : most_(threads), current_(threads) {}
+
+    int threads() const { return current_; }  // for the next step
+    bool active() const { return most_ > 1; }
+
+    // After each step, with the time now.
+    void stepped(std::chrono::steady_clock::time_point now);
+
+    // What it measured: seconds per step in each mode (0: not yet), and windows run in each.
+    double seconds_per_step(bool all_threads) const { return per_step_[all_threads]; }
+    std::size_t windows(bool all_threads) const { return windows_[all_threads]; }
+
+private:
+    enum class Stage { settled, probe, confirm };
+    int most_, current_;
+    Stage stage_ = Stage::settled;
+    bool started_ = false;
+    std::chrono::steady_clock::time_point window_start_;
+    std::size_t window_steps_ = 0;
+    double per_step_[2] = {0, 0};   // s per step, latest window: [0] one thread, [1] all
+    std::size_t windows_[2] = {0, 0};
+    int settled_windows_ = probe_every - 1;  // since the last probe: the first window probes
+    double last_settled_ = 0, before_ = 0, probe_ = 0;  // s per step
+};
+
+}  // namespace demscale::dem

@@ -1,0 +1,77 @@
+// The thread governor on modelled machines (a step costs a fixed time per mode; no real threads):
+// quiet, where all threads are faster, and contended, where they are 8 times slower than one
+// (docs/performance.md, 182 s against 23 s). The wall time over many steps must stay within the
+// bounds a hand count gives: one probe window (≥ 0.2 s) in the worse mode per 25.
+#include <catch2/catch.hpp>
+#include <chrono>
+
+#include "dem/thread_governor.hpp"
+
+using namespace demscale::dem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+// Runs `steps` steps where a step costs one_s on one thread and all_s on all; returns the wall time
+// and the share of steps run on all threads. switch_at: from that step on, all_s becomes switched_s.
+struct Outcome {
+    double wall = 0, share_all = 0;
+};
+Outcome run(int steps, double one_s, double all_s, int switch_at = -1, double switched_s = 0) {
+    ThreadGovernor g(2);
+    auto now = Clock::time_point{};
+    Outcome o;
+    int on_all = 0;
+    for (int k = 0; k < steps; ++k) {
+        const bool all = g.threads() == 2;
+        const double cost = all ? (switch_at >= 0 && k >= switch_at ? switched_s : all_s) : one_s;
+        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
+        o.wall += cost, on_all += all;
+        g.stepped(now);
+    }
+    o.share_all = double(on_all) / steps;
+    return o;
+}
+}  // namespace
+
+TEST_CASE("Thread governor: keeps all threads on a quiet machine, at a probe's cost", "[dem][threads]") {
+    // 1 ms a step on two threads, 1.4 ms on one: 100 000 steps ideally 100 s.
+    const auto o = run(100000, 1.4e-3, 1.0e-3);
+    CHECK(o.share_all > 0.95);
+    CHECK(o.wall < 100 * 1.03);  // one window in 25 at 1.4x: about 1.6 % more
+}
+
+TEST_CASE("Thread governor: falls back to one thread when the others wait, within 1.2x of one thread", "[dem][threads]") {
+    // Contended: 8 ms a step on two threads, 1.1 ms on one (the other core's job shares a core).
+    const auto o = run(100000, 1.1e-3, 8.8e-3);
+    const double one_thread = 100000 * 1.1e-3;
+    CHECK(o.share_all < 0.02);
+    CHECK(o.wall < 1.2 * one_thread);
+    // Contention that starts mid-run is noticed at the next window (1.5x slower) or probe.
+    const auto late = run(100000, 1.4e-3, 1.0e-3, 50000, 8.0e-3);
+    CHECK(late.wall < 1.2 * (50 + 50000 * 1.4e-3));
+}
+
+TEST_CASE("Thread governor: a cost that drifts over the run is not taken for contention", "[dem][threads]") {
+    // The step's cost falls by half over the run on both modes; all threads stay 1.4 times faster
+    // at every moment. Comparing a probe with the window before it alone would favour whichever
+    // mode was timed later.
+    ThreadGovernor g(2);
+    auto now = Clock::time_point{};
+    int on_all = 0;
+    const int steps = 200000;
+    for (int k = 0; k < steps; ++k) {
+        const double scale = 1.0 - 0.5 * k / steps;
+        const double cost = (g.threads() == 2 ? 1.0e-3 : 1.4e-3) * scale;
+        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
+        on_all += g.threads() == 2;
+        g.stepped(now);
+    }
+    CHECK(double(on_all) / steps > 0.95);
+}
+
+TEST_CASE("Thread governor: one thread given, nothing to govern", "[dem][threads]") {
+    ThreadGovernor g(1);
+    CHECK_FALSE(g.active());
+    g.stepped(Clock::now());
+    CHECK(g.threads() == 1);
+}
