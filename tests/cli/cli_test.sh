@@ -206,6 +206,16 @@ case $case_name in
     "$demscale" slump --scene "$work/exact.toml" --format json --no-png --out "$work/y" >"$work/fit.json" 2>"$work/fit.err" || fail "fit walls failed"
     grep -q '"wall_bridge_law": "mikami1998"' "$work/fit.json" || fail "fit wall law not named"
     grep -q "warning: particle-wall bridges: Mikami's sphere-wall fit pulls" "$work/fit.err" || fail "no wall-fit warning" ;;
+  backend_bad_input_exit_2)
+    # Refused before anything runs or is submitted, with or without Slurm on the machine.
+    small=(check-exponent --exponent 1 --scene "$src/data/scenes/small_wet.toml" --sf 1.4 --seeds 2 --out "$work/bad")
+    expect 2 '--backend = cluster.*local or slurm' -- "$demscale" "${small[@]}" --backend cluster
+    expect 2 '--backend = slurm.*cache' -- "$demscale" "${small[@]}" --backend slurm --no-cache
+    expect 2 '--backend = local.*--wait' -- "$demscale" "${small[@]}" --wait
+    expect 2 '--backend = local.*--sbatch-option' -- "$demscale" "${small[@]}" --sbatch-option=--time=5
+    expect 2 '--key = .*/0123.scene: accepted a scene text' -- "$demscale" cached-run --cache "$work/cache" --key 0123
+    [ ! -e "$work/bad" ] || fail "a refused call wrote outputs"
+    [ ! -e "$work/cache" ] || fail "a refused cached-run created the cache" ;;
   bench_size_sweep)
     # The size sweep's table: dry and wet, lattice order and shuffled, for each size; bad sizes refused.
     expect 0 '^laws,order,particles,steps,wall_s,particle_steps_per_s,rate_vs_smallest,peak_bytes_per_particle$' -- \
