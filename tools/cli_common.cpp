@@ -48,13 +48,12 @@ void add_backend_options(CLI::App* c, SlurmOptions& o) {
     c->add_flag("--wait", o.wait, "with --backend slurm: wait for the runs and go on, instead of exiting 5 until they are done");
 }
 
-std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o, bool has_cache) {
+std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o) {
     if (o.backend == "local") {
         if (!o.sbatch_options.empty() || o.wait) throw InputError("--backend", "local", "slurm, with --sbatch-option or --wait");
         return std::nullopt;
     }
     if (o.backend != "slurm") throw InputError("--backend", o.backend, "local or slurm");
-    if (!has_cache) throw InputError("--backend", "slurm", "a cache folder (drop --no-cache): the Slurm tasks hand their results back through it");
     slump::SlurmSettings s;
     s.executable = std::filesystem::read_symlink("/proc/self/exe");  // the tasks run this very build
     s.sbatch_options = o.sbatch_options;
@@ -65,7 +64,7 @@ std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o, bool h
 BatchSettings batch_settings(const StudyRunOptions& o) {
     const auto par = parallelism(o.jobs, o.threads);
     return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt,
-            slurm_settings(o.slurm, !o.no_cache)};
+            slurm_settings(o.slurm)};
 }
 
 io::TableConfig load_config(const std::string& path) {

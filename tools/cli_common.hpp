@@ -81,8 +81,9 @@ struct SlurmOptions {
     bool wait = false;
 };
 void add_backend_options(CLI::App* c, SlurmOptions& o);
-// None for the local backend; InputError for an unknown backend or Slurm without a cache.
-std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o, bool has_cache);
+// None for the local backend; InputError for an unknown backend, or Slurm options without it (the
+// batch runner refuses Slurm without a cache).
+std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o);
 
 // What every command that runs slump ensembles shares: how runs go side by side, the cache,
 // where tables and figures go. add_study_run_options registers the options; batch_options turns

@@ -39,7 +39,7 @@ int run_report(const Options& o) {
     if (!o.no_cache) r.cache_dir = o.cache;
     const auto par = parallelism(o.jobs, o.threads);
     r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
-    r.slurm = slurm_settings(o.slurm, !o.no_cache);
+    r.slurm = slurm_settings(o.slurm);
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
     r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
     r.git_revision = demscale::git_revision;  // the build's, refreshed at every build

@@ -13,7 +13,7 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
     if (window_steps_ < 20 || elapsed < 0.2) return;
     const bool all = current_ == most_;
     const double per_step = elapsed / static_cast<double>(window_steps_);
-    per_step_[all] = per_step, ++windows_[all];
+    ++windows_[all];
     window_start_ = now, window_steps_ = 0;
     const int other = all ? 1 : most_;
     switch (stage_) {

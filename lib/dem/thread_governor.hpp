@@ -27,8 +27,7 @@ public:
     // After each step, with the time now.
     void stepped(std::chrono::steady_clock::time_point now);
 
-    // What it measured: seconds per step in each mode (0: not yet), and windows run in each.
-    double seconds_per_step(bool all_threads) const { return per_step_[all_threads]; }
+    // Windows run in each mode.
     std::size_t windows(bool all_threads) const { return windows_[all_threads]; }
 
 private:
@@ -38,8 +37,7 @@ private:
     bool started_ = false;
     std::chrono::steady_clock::time_point window_start_;
     std::size_t window_steps_ = 0;
-    double per_step_[2] = {0, 0};   // s per step, latest window: [0] one thread, [1] all
-    std::size_t windows_[2] = {0, 0};
+    std::size_t windows_[2] = {0, 0};  // [0] one thread, [1] all
     int settled_windows_ = probe_every - 1;  // since the last probe: the first window probes
     double last_settled_ = 0, before_ = 0, probe_ = 0;  // s per step
 };

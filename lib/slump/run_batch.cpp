@@ -66,8 +66,8 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
         const auto round = submit_to_slurm(handed, *cache, o.threads_per_job, o.force_dt, *o.slurm, log);
         if (!o.slurm->wait)
             throw RunsPending(round.summary() + "; run the same command again to collect them (squeue shows the queue)");
-        wait_for_slurm(handed, *cache, *o.slurm, log);
-        for (auto* r : pending) r->result = *cache->load(r->key), r->from_cache = true;
+        auto results = wait_for_slurm(handed, *cache, *o.slurm, log);
+        for (std::size_t i = 0; i < pending.size(); ++i) pending[i]->result = std::move(results[i]), pending[i]->from_cache = true;
         pending.clear();
     }
 

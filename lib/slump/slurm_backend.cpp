@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -142,16 +143,19 @@ SlurmRound submit_to_slurm(const std::vector<SlurmRun>& runs, const RunCache& ca
     return round;
 }
 
-void wait_for_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, const SlurmSettings& settings,
-                    const std::function<void(const std::string&)>& log) {
+std::vector<SlumpResult> wait_for_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, const SlurmSettings& settings,
+                                        const std::function<void(const std::string&)>& log) {
+    std::vector<std::optional<SlumpResult>> results(runs.size());
     std::size_t last_done = runs.size() + 1;
     for (;;) {
         // The queue first: a task that leaves it has already cached its result.
         const auto queue = queued_tasks();
         std::size_t done = 0, queued = 0;
         std::vector<std::string> lost;
-        for (const auto& r : runs) {
-            if (cache.load(r.key)) ++done;
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+            const auto& r = runs[i];
+            if (!results[i]) results[i] = cache.load(r.key);
+            if (results[i]) ++done;
             else if (const auto t = task_of(cache, r.key); t && queue.contains(*t)) ++queued;
             else lost.push_back(r.key + " (log: " + (t ? log_of(cache, *t).string() : std::string("none")) + ")");
         }
@@ -161,7 +165,11 @@ void wait_for_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, co
         if (done != last_done && log) log("Slurm: " + std::to_string(done) + " of " + std::to_string(runs.size()) + " runs cached, " +
                                           std::to_string(queued) + " in the queue");
         last_done = done;
-        if (done == runs.size()) return;
+        if (done == runs.size()) {
+            std::vector<SlumpResult> out;
+            for (auto& r : results) out.push_back(std::move(*r));
+            return out;
+        }
         for (auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(settings.poll_s);
              std::chrono::steady_clock::now() < until;) {
             if (interrupt_requested())

@@ -43,9 +43,10 @@ struct SlurmRound {
 SlurmRound submit_to_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, int threads, bool force_dt,
                            const SlurmSettings& settings, const std::function<void(const std::string&)>& log = {});
 
-// Polls the queue until every run is cached. Throws std::runtime_error naming the logs when a task
-// ends without a result, and Interrupted on SIGINT (the tasks go on in Slurm).
-void wait_for_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, const SlurmSettings& settings,
+// Polls the queue until every run is cached; returns their results, in the order of runs (each
+// read from the cache once). Throws std::runtime_error naming the logs when a task ends without a
+// result, and Interrupted on SIGINT (the tasks go on in Slurm).
+std::vector<SlumpResult> wait_for_slurm(const std::vector<SlurmRun>& runs, const RunCache& cache, const SlurmSettings& settings,
                     const std::function<void(const std::string&)>& log = {});
 
 // What an array task does: reads DIR/slurm/<key>.scene, checks it is the scene of that key, runs
