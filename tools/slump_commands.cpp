@@ -62,8 +62,8 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
     auto last_phase = std::make_shared<std::string>();
     auto next_frame = std::make_shared<double>(0.0);
     return [=](const slump::SlumpProgress& p) {
-        if (series && p.particles && p.time >= *next_frame) {
-            series->add(p.time, *p.particles);
+        if (series && p.state && p.time >= *next_frame) {
+            series->add(p.time, p.state());
             *next_frame += vtk_every;
         }
         if (tty)

@@ -7,7 +7,7 @@
 
 namespace demscale::dem {
 
-void NeighborList::build(const Particles& p) {
+void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* rank) {
     pairs_.clear();
     built_at_ = p.position;
     ++builds_;
@@ -56,8 +56,11 @@ void NeighborList::build(const Particles& p) {
                             const std::uint32_t j = order[k];
                             if (j <= i || (p.fixed[i] && p.fixed[j])) continue;  // two fixed grains never interact
                             const double reach = p.radius[i] + p.radius[j] + gap;
-                            if ((p.position[j] - x).squaredNorm() < reach * reach)
-                                local.emplace_back(static_cast<std::uint32_t>(i), j);
+                            if ((p.position[j] - x).squaredNorm() < reach * reach) {
+                                const auto a = static_cast<std::uint32_t>(i);
+                                if (rank && (*rank)[a] > (*rank)[j]) local.emplace_back(j, a);
+                                else local.emplace_back(a, j);
+                            }
                         }
                     }
         }

@@ -16,8 +16,10 @@ class NeighborList {
 public:
     explicit NeighborList(double skin) : skin_(skin) {}
 
-    // Pairs (i < j) in ascending order of (i, j); never two fixed spheres.
-    void build(const Particles& p);
+    // Pairs (i, j) in ascending order of (i, j), never two fixed spheres, each oriented by rank:
+    // rank[i] < rank[j] (the engine's spheres' input order, kept by a pair whatever its spheres'
+    // places in memory); without ranks, i < j.
+    void build(const Particles& p, const std::vector<std::uint32_t>* rank = nullptr);
     bool needs_rebuild(const Particles& p) const;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
     std::size_t builds() const { return builds_; }

@@ -5,10 +5,14 @@
 // on one thread each pair adds to its particles at once, in the same order: the same bits. SI.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <omp.h>
+#include <tuple>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -53,6 +57,23 @@ public:
         index(p);
     }
 
+    // After the engine reordered its spheres (sphere s is now new_index[s]): the same pairs, each
+    // with its orientation and history, in ascending (i, j) order again, ready for merge().
+    void renumber(const std::vector<std::uint32_t>& new_index) {
+        for (auto& q : pairs_) q = {new_index[q.i], new_index[q.j]};
+        std::vector<std::uint32_t> order(pairs_.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return std::tie(pairs_[a].i, pairs_[a].j) < std::tie(pairs_[b].i, pairs_[b].j);
+        });
+        auto apply = [&](auto& v) {
+            std::remove_reference_t<decltype(v)> sorted(v.size());
+            for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = v[order[k]];
+            v = std::move(sorted);
+        };
+        apply(pairs_), apply(states_), apply(engaged_);
+    }
+
     // Adds this step's pair forces and torques to the particles (which hold gravity already); the
     // ledger gets what each thread's pairs dissipated.
     void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger) {
@@ -61,8 +82,8 @@ public:
         if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
             // One thread: each pair that acts adds to its two particles at once. Every particle still
             // sums its pairs in ascending pair order, after gravity: the same bits as the gather
-            // below (which also adds the zeros of pairs that do not act, and the zero torques of
-            // central forces; sums that start at +0 or a non-zero value are unchanged by adding ±0).
+            // below (which also adds the zero torques of central forces; sums that start at +0 or
+            // a non-zero value are unchanged by adding ±0).
             Lost lost;
             for (std::size_t k = 0; k < pairs_.size(); ++k) {
                 PairResult r;
@@ -75,15 +96,17 @@ public:
             ledger.add(0, lost);
             return;
         }
-        // Threads: pair results into a buffer, then each particle gathers its own (no races).
+        // Threads: the results of the pairs that act into a buffer, then each particle gathers its
+        // own (no races), passing over the pairs that did not act (engaged_ says which: as on one
+        // thread, and no buffer traffic for the many listed pairs apart).
 #pragma omp parallel
         {
             Lost lost;
 #pragma omp for schedule(static)
             for (long k = 0; k < n_pairs; ++k) {
-                PairResult& r = results_[static_cast<std::size_t>(k)];
-                r = PairResult{};
-                listed_result(p, law, dt, static_cast<std::size_t>(k), reach, lost, r);
+                PairResult r;
+                if (listed_result(p, law, dt, static_cast<std::size_t>(k), reach, lost, r) != Acts::nothing)
+                    results_[static_cast<std::size_t>(k)] = r;
             }
             ledger.add(omp_get_thread_num(), lost);
         }
@@ -92,6 +115,7 @@ public:
             const std::size_t i = static_cast<std::size_t>(ii);
             Vec3 f = p.force[i], t = p.torque[i];
             for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                if (!engaged_[incidence_[e] / 2]) continue;
                 const PairResult& r = results_[incidence_[e] / 2];
                 if (incidence_[e] % 2 == 0) f += r.force_i, t += r.torque_i;
                 else f -= r.force_i, t += r.torque_j;
@@ -115,7 +139,9 @@ public:
 
     // The first of particle i's pairs (in pair order) whose contribution is not finite, described
     // ("from its contact with particle 7 (gap … m)"); evaluated again on a copy of its history.
-    std::optional<std::string> non_finite_contact(std::size_t i, const Particles& p, const Law& law, double dt) const {
+    // name: each particle's name in the report (the engine's input order).
+    std::optional<std::string> non_finite_contact(std::size_t i, const Particles& p, const Law& law, double dt,
+                                                   const std::vector<std::uint32_t>& name) const {
         for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
             const PairIndex q = pairs_[incidence_[e] / 2];
             LawState copy = states_[incidence_[e] / 2];
@@ -125,7 +151,7 @@ public:
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p.position[i] - p.position[other]).norm() - p.radius[i] - p.radius[other];
-            return ", from its contact with particle " + std::to_string(other) + " (gap " + std::to_string(gap) + " m)";
+            return ", from its contact with particle " + std::to_string(name[other]) + " (gap " + std::to_string(gap) + " m)";
         }
         return std::nullopt;
     }
@@ -155,7 +181,7 @@ private:
     static_assert(std::is_standard_layout_v<LawState>);  // written as bytes
 
     struct PairIndex {
-        std::uint32_t i, j;  // i < j
+        std::uint32_t i, j;  // oriented by the engine's input order (NeighborList::build's rank)
     };
     struct ListedPair {  // a checkpoint's record of one listed pair
         std::uint32_t i, j;

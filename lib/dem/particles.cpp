@@ -32,21 +32,25 @@ std::size_t Particles::add_fixed(const Vec3& x, double r, double rho, int specie
 }
 
 void Particles::append(const Particles& o) {
-    auto cat = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
-    cat(position, o.position), cat(velocity, o.velocity), cat(angular_velocity, o.angular_velocity), cat(force, o.force);
-    cat(torque, o.torque), cat(radius, o.radius), cat(mass, o.mass), cat(inertia, o.inertia), cat(species, o.species);
-    cat(fixed, o.fixed);
+    for_each_array([&](auto member) { (this->*member).insert((this->*member).end(), (o.*member).begin(), (o.*member).end()); });
 }
 
 Particles Particles::mobile() const {
-    Particles m;
-    for (std::size_t i = 0; i < size(); ++i) {
-        if (fixed[i]) continue;
-        m.position.push_back(position[i]), m.velocity.push_back(velocity[i]), m.angular_velocity.push_back(angular_velocity[i]);
-        m.force.push_back(force[i]), m.torque.push_back(torque[i]), m.radius.push_back(radius[i]), m.mass.push_back(mass[i]);
-        m.inertia.push_back(inertia[i]), m.species.push_back(species[i]), m.fixed.push_back(0);
-    }
+    std::vector<std::uint32_t> keep;
+    for (std::uint32_t i = 0; i < size(); ++i)
+        if (!fixed[i]) keep.push_back(i);
+    Particles m = *this;
+    m.reorder(keep);
     return m;
+}
+
+void Particles::reorder(const std::vector<std::uint32_t>& order) {
+    for_each_array([&](auto member) {
+        auto& from = this->*member;
+        std::remove_reference_t<decltype(from)> to(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) to[k] = from[order[k]];
+        from = std::move(to);
+    });
 }
 
 std::size_t Particles::mobile_count() const {

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>  // cross products
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 namespace demscale::dem {
@@ -38,6 +39,19 @@ struct Particles {
     void append(const Particles& other);
     // A copy holding the mobile spheres only, in their order.
     Particles mobile() const;
+    // Keeps the spheres at order[0], order[1], … in that order: a permutation reorders them, a
+    // shorter list selects.
+    void reorder(const std::vector<std::uint32_t>& order);
+
+    // Every per-sphere array, for the operations above (one list: a new array cannot be forgotten).
+    static constexpr auto arrays = std::tuple{&Particles::position, &Particles::velocity, &Particles::angular_velocity,
+                                              &Particles::force,    &Particles::torque,   &Particles::radius,
+                                              &Particles::mass,     &Particles::inertia,  &Particles::species,
+                                              &Particles::fixed};
+    template <class F>
+    static void for_each_array(F f) {
+        std::apply([&](auto... member) { (f(member), ...); }, arrays);
+    }
 };
 
 }  // namespace demscale::dem

@@ -4,12 +4,17 @@
 // their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
 // functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). Trajectories are
 // bit-identical for any thread count (the energy ledger's sums, per thread, only for the same
-// thread count). SI units.
+// thread count). A large scene's spheres are reordered along a space-filling curve now and then
+// (spatial_order.hpp): particles() is then in that order, input_index() names each sphere's place
+// in the input, and in_input_order() gives the state as it was ordered. SI units.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <istream>
+#include <numeric>
 #include <omp.h>
 #include <optional>
 #include <ostream>
@@ -24,6 +29,7 @@
 #include "dem/neighbor_list.hpp"
 #include "dem/thread_governor.hpp"
 #include "dem/pair_contacts.hpp"
+#include "dem/spatial_order.hpp"
 #include "dem/wall_contacts.hpp"
 #include "dem/walls.hpp"
 
@@ -34,11 +40,13 @@ namespace demscale::dem {
 template <class Law, bool Ledger = true>
 class Simulation {
 public:
-    Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin)
+    Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin,
+               SpatialSort sort = {})
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
-          neighbors_(skin), wall_contacts_(walls_.size(), p_.size()) {
+          neighbors_(skin), wall_contacts_(walls_.size(), p_.size()), sort_(sort), input_index_(p_.size()) {
         require_positive(dt, "dt");
         require_positive(skin, "skin");
+        std::iota(input_index_.begin(), input_index_.end(), 0u);
         index_particles();
         rebuild();
         compute_forces();
@@ -66,8 +74,20 @@ public:
 
     const ThreadGovernor& governor() const { return governor_; }
 
+    // The spheres in the engine's order (input_index() maps it to the input's).
     const Particles& particles() const { return p_; }
     Particles& particles() { return p_; }  // to move particles or set velocities; masses stay as built
+    // Where each sphere stood in the input: particles()[k] is the input's sphere input_index()[k].
+    const std::vector<std::uint32_t>& input_index() const { return input_index_; }
+    // The state now, in the input's order (a copy).
+    Particles in_input_order() const {
+        std::vector<std::uint32_t> slot(p_.size());
+        for (std::uint32_t k = 0; k < slot.size(); ++k) slot[input_index_[k]] = k;
+        Particles copy = p_;
+        copy.reorder(slot);
+        return copy;
+    }
+    std::size_t spatial_sorts() const { return sorts_; }
     std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
     // Takes a wall out of the scene (the slump cone after its lift), with its contact history.
@@ -112,6 +132,7 @@ public:
         w.array(p_.position), w.array(p_.velocity), w.array(p_.angular_velocity), w.array(p_.force), w.array(p_.torque);
         w.array(p_.radius), w.array(p_.mass), w.array(p_.inertia), w.array(p_.species), w.array(p_.fixed);
         w.value(time_), w.value(steps_), ledger_.write(w);
+        w.array(input_index_), w.value(sorts_), w.value(sorted_at_);
         w.value(neighbors_.builds());
         w.array(neighbors_.built_at());
         pair_contacts_.write(w);
@@ -130,6 +151,7 @@ public:
         r.array(p_.position), r.array(p_.velocity), r.array(p_.angular_velocity), r.array(p_.force), r.array(p_.torque);
         r.array(p_.radius), r.array(p_.mass), r.array(p_.inertia), r.array(p_.species), r.array(p_.fixed);
         r.value(time_), r.value(steps_), ledger_.read(r);
+        r.array(input_index_), r.value(sorts_), r.value(sorted_at_);
         std::size_t builds = 0;
         r.value(builds);
         std::vector<Vec3> built_at;
@@ -154,7 +176,7 @@ public:
     }
 
 private:
-    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-5";
+    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-6";
 
     // Sets the governor's thread count for one step and restores the caller's after it (also when
     // the step throws), then reports the step's end to the governor.
@@ -192,8 +214,25 @@ private:
     }
 
     void rebuild() {
-        neighbors_.build(p_);
+        if (p_.size() > 1 && p_.size() >= sort_.min_particles && (sorts_ == 0 || steps_ - sorted_at_ >= sort_.every_steps))
+            reorder_spatially();
+        neighbors_.build(p_, &input_index_);  // pairs oriented by input order: a reorder flips none
         pair_contacts_.merge(neighbors_.pairs(), p_, law_);
+    }
+
+    // The spheres along the space-filling curve through the neighbour grid's cells, each with its
+    // state, wall contacts and pairs (renumbered; the next merge indexes them).
+    void reorder_spatially() {
+        const double r_max = *std::max_element(p_.radius.begin(), p_.radius.end());
+        const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max + neighbors_.cutoff_gap());
+        ++sorts_, sorted_at_ = steps_;
+        std::vector<std::uint32_t> new_index(order.size()), input(order.size());
+        for (std::uint32_t k = 0; k < order.size(); ++k) new_index[order[k]] = k, input[k] = input_index_[order[k]];
+        input_index_ = std::move(input);
+        p_.reorder(order);
+        wall_contacts_.reorder(order);
+        index_particles();
+        pair_contacts_.renumber(new_index);
     }
 
     void compute_forces() {
@@ -202,7 +241,9 @@ private:
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long i = 0; i < n; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
         pair_contacts_.add_forces(p_, law_, dt_, ledger_);
-        wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, steps_, ledger_);
+        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_))
+            throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
+                                     std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);
         double probe = 0;  // NaN or inf in any force or torque makes the sum non-finite (in any order)
 #pragma omp parallel for schedule(static) reduction(+ : probe) if (n > parallel_threshold)
@@ -216,11 +257,11 @@ private:
     // Why particle i got a non-finite force, torque or position ("what": "force on", "position of"):
     // its own state, or the first contact (in pair order, then walls) whose contribution is not finite.
     std::string non_finite_report(std::size_t i, const std::string& what) const {
-        const std::string why = "non-finite " + what + " particle " + std::to_string(i) + " at step " + std::to_string(steps_) +
+        const std::string why = "non-finite " + what + " particle " + std::to_string(input_index_[i]) + " at step " + std::to_string(steps_) +
                                 " (t = " + std::to_string(time_) + " s)";
         if (!p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite()) return why + ": its velocity is not finite";
         if (!p_.position[i].allFinite()) return why + ": its position is not finite";
-        if (const auto pair = pair_contacts_.non_finite_contact(i, p_, law_, dt_)) return why + *pair;
+        if (const auto pair = pair_contacts_.non_finite_contact(i, p_, law_, dt_, input_index_)) return why + *pair;
         if (const auto wall = wall_contacts_.contact_report(i, p_, law_, walls_, time_, dt_)) return why + *wall;
         return why;
     }
@@ -240,6 +281,9 @@ private:
     EnergyLedger<Ledger> ledger_;
     double time_ = 0;
     std::size_t steps_ = 0;
+    SpatialSort sort_;
+    std::vector<std::uint32_t> input_index_;  // each sphere's place in the input
+    std::size_t sorts_ = 0, sorted_at_ = 0;   // reorders so far; the step of the last
     // The ledger sums per thread: a run that books it keeps one thread count (bit-identical ledger).
     ThreadGovernor governor_{Ledger ? 1 : omp_get_max_threads()};
 };

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <omp.h>
 #include <optional>
-#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "dem/checkpoint.hpp"
@@ -33,14 +33,30 @@ public:
         for (std::size_t i = 0; i < p.size(); ++i) shapes_[i] = pair_shape(p, i, a_wall);
     }
 
+    // After the engine reordered its spheres (sphere k is now the one that was at order[k]): each
+    // contact's history follows its sphere. index() follows.
+    void reorder(const std::vector<std::uint32_t>& order) {
+        auto apply = [&](auto& v) {
+            std::remove_reference_t<decltype(v)> sorted(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = v[order[k]];
+            v = std::move(sorted);
+        };
+        for (auto& states : state_) apply(states);
+        for (auto& engaged : engaged_) apply(engaged);
+    }
+
+    struct Escape {  // a particle found behind a wall: it left the domain through it
+        std::size_t particle, wall;
+    };
+
     // Adds this step's wall forces and torques to the particles; the ledger gets each thread's
-    // losses and the walls' power. Throws naming the particle, wall and step when a particle has
-    // left the domain through a wall.
-    void add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt, std::size_t step,
-                    EnergyLedger<Ledger>& ledger) {
+    // losses and the walls' power. Returns a particle that has left the domain through a wall (the
+    // caller stops the run).
+    std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
+                                     EnergyLedger<Ledger>& ledger) {
         const double reach = law.range();
         const long n = static_cast<long>(p.size());
-        std::string wall_error;
+        std::optional<Escape> escape;
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
@@ -64,8 +80,7 @@ public:
                     const WallPoint wp = closest_wall_point(walls[w], p.position[i], time);
                     if (wp.behind) {
 #pragma omp critical
-                        wall_error = "particle " + std::to_string(i) + " left the domain through wall " + std::to_string(w) +
-                                     " at step " + std::to_string(step);
+                        escape = Escape{i, w};
                         continue;
                     }
                     const Vec3 d = p.position[i] - wp.point;
@@ -84,7 +99,7 @@ public:
             }
             ledger.add(omp_get_thread_num(), lost, wall_power);
         }
-        if (!wall_error.empty()) throw std::runtime_error(wall_error);
+        return escape;
     }
 
     // The contact geometry of particle i with a wall, if within the law's range of it.

@@ -6,12 +6,12 @@
 
 namespace demscale::slump {
 
-bool quantile_slower_than(const dem::Particles& p, std::size_t count, double speed, double quantile) {
+bool quantile_slower_than(const dem::Particles& p, double speed, double quantile) {
     const double limit = speed * speed;
-    const auto allowed = static_cast<std::size_t>(std::floor((1 - quantile) * static_cast<double>(count)));
+    const auto allowed = static_cast<std::size_t>(std::floor((1 - quantile) * static_cast<double>(p.mobile_count())));
     std::size_t fast = 0;
-    for (std::size_t i = 0; i < count; ++i)
-        if (!(p.velocity[i].squaredNorm() < limit) && ++fast > allowed) return false;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (!p.fixed[i] && !(p.velocity[i].squaredNorm() < limit) && ++fast > allowed) return false;
     return true;
 }
 

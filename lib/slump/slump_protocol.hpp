@@ -54,16 +54,16 @@ inline std::vector<Wall> slump_walls(const SlumpScene& s) {
     return {PlaneWall{}, cone};
 }
 
-// Steps sim until all but (1 − rest_quantile) of the first `pile` spheres have been slower than the
-// rest speed for rest_duration (true), or until `end` (false). still_since: s, −1 while moving.
+// Steps sim until all but (1 − rest_quantile) of the pile (the mobile spheres) have been slower than
+// the rest speed for rest_duration (true), or until `end` (false). still_since: s, −1 while moving.
 // before() runs before each step (interrupt checks), after() after it (samples, progress).
 template <class Sim, class Before, class After>
-bool run_until_rest(Sim& sim, const SlumpScene& s, std::size_t pile, double end, double& still_since, Before before, After after) {
+bool run_until_rest(Sim& sim, const SlumpScene& s, double end, double& still_since, Before before, After after) {
     while (sim.time() < end) {
         before();
         sim.step();
         after();
-        if (quantile_slower_than(sim.particles(), pile, s.rest_speed_m_per_s, s.rest_quantile)) {
+        if (quantile_slower_than(sim.particles(), s.rest_speed_m_per_s, s.rest_quantile)) {
             if (still_since < 0) still_since = sim.time();
             if (sim.time() - still_since >= s.rest_duration_s) return true;
         } else {
@@ -77,22 +77,22 @@ bool run_until_rest(Sim& sim, const SlumpScene& s, std::size_t pile, double end,
 // An interrupt during the pour stops without a checkpoint (a rerun pours again, identically).
 template <class Law>
 Particles pour_with(const SlumpScene& s, const Law& law, const std::function<void(const SlumpProgress&)>& progress,
-                    double& pour_time, std::uint64_t& pour_steps) {
+                    const SpatialSort& sort, double& pour_time, std::uint64_t& pour_steps) {
     return pour_fill(s, [&](Particles pile) {
-        const std::size_t n = pile.size();
         pile.append(floor_grains(s));
-        Simulation<Law, false> sim(std::move(pile), law, slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
+        Simulation<Law, false> sim(std::move(pile), law, slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m, sort);
         const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
         double still_since = -1;
         auto check = [] {
             if (interrupt_requested()) throw Interrupted("interrupted while pouring the fill (no checkpoint: a rerun pours again)", "");
         };
-        run_until_rest(sim, s, n, s.pour_time_s, still_since, check, [&] {
+        run_until_rest(sim, s, s.pour_time_s, still_since, check, [&] {
             if (progress && sim.steps() % report_every == 0)
-                progress({"pour", pour_time + sim.time(), pour_time + s.pour_time_s, pour_steps + sim.steps(), 0, &sim.particles()});
+                progress({"pour", pour_time + sim.time(), pour_time + s.pour_time_s, pour_steps + sim.steps(), 0,
+                          [&] { return sim.in_input_order(); }});
         });
         pour_time += sim.time(), pour_steps += sim.steps();
-        return sim.particles().mobile();
+        return sim.in_input_order().mobile();
     });
 }
 
@@ -104,7 +104,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.particles = particles.size();
     st.pile = res.particles;
     particles.append(floor_grains(s));  // after the pile: pile indices are the same as without them
-    Simulation<Law, Ledger> sim(std::move(particles), std::move(law), slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m);
+    Simulation<Law, Ledger> sim(std::move(particles), std::move(law), slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m,
+                                phases.spatial_sort);
     const std::string key = scene_key(s);
     auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
     if (!phases.resume.empty()) {
@@ -132,18 +133,19 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     auto sample = [&] {
         const auto& p = sim.particles();
         double top = 0, spread = 0;
-        for (std::size_t i = 0; i < res.particles; ++i)  // the pile, not the floor's grains
-            top = std::max(top, p.position[i].z() + p.radius[i]), spread = std::max(spread, std::hypot(p.position[i].x(), p.position[i].y()));
+        for (std::size_t i = 0; i < p.size(); ++i)  // the pile, not the floor's grains (maxima: in any order)
+            if (!p.fixed[i])
+                top = std::max(top, p.position[i].z() + p.radius[i]), spread = std::max(spread, std::hypot(p.position[i].x(), p.position[i].y()));
         res.history.push_back({sim.time(), top, 2 * (spread + s.radius_m), sim.energy()});
     };
     if (phases.resume.empty()) sample();
     auto tick = [&](const std::string& phase, double end) {
         if (sim.steps() % report_every != 0) return;
         sample();
-        const auto& p = sim.particles();
         if (progress) {
             const double wall = wall_time();
-            progress({phase, sim.time(), end, sim.steps(), wall > 0 ? double(res.particles * sim.steps()) / wall : 0, &p});
+            progress({phase, sim.time(), end, sim.steps(), wall > 0 ? double(res.particles * sim.steps()) / wall : 0,
+                      [&] { return sim.in_input_order(); }});
         }
     };
     // Called between steps when SIGINT/SIGTERM arrived: the state after the last whole step.
@@ -163,20 +165,21 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     };
     auto rest = [&](const std::string& phase, double end) {
         return run_until_rest(
-            sim, s, res.particles, end, st.still_since, [&] { if (interrupt_requested()) stop_here(); }, [&] { tick(phase, end); });
+            sim, s, end, st.still_since, [&] { if (interrupt_requested()) stop_here(); }, [&] { tick(phase, end); });
     };
     if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
         if (!phases.start) st.settled = rest("settle", s.settle_time_s);
         st.settle_end = sim.time();
-        if (phases.fill_measures) st.fill = measure_fill(sim.particles(), s);
-        st.initial_height = measure_pile(sim.particles(), lone_sphere_top(s)).height;
+        const Particles settled = sim.in_input_order();  // what is reported is measured in the input's order
+        if (phases.fill_measures) st.fill = measure_fill(settled, s);
+        st.initial_height = measure_pile(settled, lone_sphere_top(s)).height;
         if (phases.settle_only) {
             res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
-            res.motion = summarize_motion(sim.particles(), res.particles, s.rest_speed_m_per_s);
+            res.motion = summarize_motion(settled, res.particles, s.rest_speed_m_per_s);
             res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
             res.steps = sim.steps();
-            res.final = measure_pile(sim.particles(), lone_sphere_top(s));
-            res.final_state = sim.particles().mobile();
+            res.final = measure_pile(settled, lone_sphere_top(s));
+            res.final_state = settled.mobile();
             res.wall_s = wall_time();
             return res;
         }
@@ -198,12 +201,13 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.came_to_rest = rest("spread", st.lifted_at + s.spread_time_s);
     res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height, res.lift_end = st.lifted_at;
     res.rest_since = res.came_to_rest ? st.still_since : -1;
-    res.motion = summarize_motion(sim.particles(), res.particles, s.rest_speed_m_per_s);
+    const Particles end_state = sim.in_input_order();
+    res.motion = summarize_motion(end_state, res.particles, s.rest_speed_m_per_s);
     res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
     res.end = sim.time();
     res.steps = sim.steps();
-    res.final = measure_pile(sim.particles(), lone_sphere_top(s));
-    res.final_state = sim.particles().mobile();
+    res.final = measure_pile(end_state, lone_sphere_top(s));
+    res.final_state = end_state.mobile();
     res.windows_all_threads = sim.governor().windows(true), res.windows_one_thread = sim.governor().windows(false);
     res.wall_s = wall_time();
     return res;
@@ -218,7 +222,7 @@ SlumpResult run_protocol(const SlumpScene& s, Cohesion cohesion, Particles parti
         ProtocolState st;
         if (pour) {  // its wall time counts in the run's
             const auto t0 = std::chrono::steady_clock::now();
-            particles = pour_with(s, law, progress, st.pour_time, st.pour_steps);
+            particles = pour_with(s, law, progress, phases.spatial_sort, st.pour_time, st.pour_steps);
             st.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         }
         return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases, st)

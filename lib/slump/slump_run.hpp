@@ -13,6 +13,7 @@
 
 #include "dem/energy.hpp"
 #include "dem/particles.hpp"
+#include "dem/spatial_order.hpp"
 #include "slump/fill_measures.hpp"
 #include "slump/measurements.hpp"
 #include "slump/motion.hpp"
@@ -26,7 +27,7 @@ struct SlumpProgress {
     double phase_end = 0;     // latest end of the phase, s
     std::size_t steps = 0;
     double particle_steps_per_s = 0;
-    const dem::Particles* particles = nullptr;  // the current state, for snapshots
+    std::function<dem::Particles()> state;  // the current state in the input's order (a copy), for snapshots
 };
 
 struct TimePoint {
@@ -74,6 +75,10 @@ struct SlumpPhases {
     bool fill_measures = true;  // false: no fill measures (about 140 sample points per sphere); the size sweep's runs
     const dem::Particles* start = nullptr;  // settled state: skip fill and settle
     std::filesystem::path checkpoint, resume;
+    // When the engines reorder their spheres. Reordering changes a run's last bits, so the commands
+    // keep this default, which the run cache's format stands for (scene_text.hpp); tests and
+    // benchmarks change it.
+    dem::SpatialSort spatial_sort;
 };
 
 // Throws InputError naming the scene's run.dt_s when dt exceeds a limit of the laws that act
