@@ -9,10 +9,9 @@
 #include <cstdint>
 #include <numeric>
 #include <omp.h>
-#include <tuple>
 #include <optional>
 #include <string>
-#include <type_traits>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -66,12 +65,7 @@ public:
         std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
             return std::tie(pairs_[a].i, pairs_[a].j) < std::tie(pairs_[b].i, pairs_[b].j);
         });
-        auto apply = [&](auto& v) {
-            std::remove_reference_t<decltype(v)> sorted(v.size());
-            for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = v[order[k]];
-            v = std::move(sorted);
-        };
-        apply(pairs_), apply(states_), apply(engaged_);
+        gather(pairs_, order), gather(states_, order), gather(engaged_, order);
     }
 
     // Adds this step's pair forces and torques to the particles (which hold gravity already); the

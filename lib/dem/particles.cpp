@@ -45,12 +45,7 @@ Particles Particles::mobile() const {
 }
 
 void Particles::reorder(const std::vector<std::uint32_t>& order) {
-    for_each_array([&](auto member) {
-        auto& from = this->*member;
-        std::remove_reference_t<decltype(from)> to(order.size());
-        for (std::size_t k = 0; k < order.size(); ++k) to[k] = from[order[k]];
-        from = std::move(to);
-    });
+    for_each_array([&](auto member) { gather(this->*member, order); });
 }
 
 std::size_t Particles::mobile_count() const {

@@ -12,6 +12,15 @@ namespace demscale::dem {
 
 using Vec3 = Eigen::Vector3d;
 
+// Keeps v's elements at order[0], order[1], … in that order: one per-sphere (or per-pair) array
+// reordered or selected. Every such reorder of the engine goes through it.
+template <class T, class A>
+void gather(std::vector<T, A>& v, const std::vector<std::uint32_t>& order) {
+    std::vector<T, A> kept(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) kept[k] = v[order[k]];
+    v = std::move(kept);
+}
+
 // Loops over fewer items than this (particles, pairs) run on one thread: starting threads would
 // cost more than the work.
 inline constexpr long parallel_threshold = 512;

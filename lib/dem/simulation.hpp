@@ -4,7 +4,7 @@
 // their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
 // functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). Trajectories are
 // bit-identical for any thread count (the energy ledger's sums, per thread, only for the same
-// thread count). A large scene's spheres are reordered along a space-filling curve now and then
+// thread count). A large scene's spheres are reordered cell by cell now and then
 // (spatial_order.hpp): particles() is then in that order, input_index() names each sphere's place
 // in the input, and in_input_order() gives the state as it was ordered. SI units.
 #pragma once
@@ -220,8 +220,8 @@ private:
         pair_contacts_.merge(neighbors_.pairs(), p_, law_);
     }
 
-    // The spheres along the space-filling curve through the neighbour grid's cells, each with its
-    // state, wall contacts and pairs (renumbered; the next merge indexes them).
+    // The spheres cell by cell through cells of the neighbour grid's size, each with its state, wall
+    // contacts and pairs (renumbered; the next merge indexes them).
     void reorder_spatially() {
         const double r_max = *std::max_element(p_.radius.begin(), p_.radius.end());
         const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max + neighbors_.cutoff_gap());

@@ -7,7 +7,6 @@
 #include <omp.h>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "dem/checkpoint.hpp"
@@ -36,13 +35,8 @@ public:
     // After the engine reordered its spheres (sphere k is now the one that was at order[k]): each
     // contact's history follows its sphere. index() follows.
     void reorder(const std::vector<std::uint32_t>& order) {
-        auto apply = [&](auto& v) {
-            std::remove_reference_t<decltype(v)> sorted(order.size());
-            for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = v[order[k]];
-            v = std::move(sorted);
-        };
-        for (auto& states : state_) apply(states);
-        for (auto& engaged : engaged_) apply(engaged);
+        for (auto& states : state_) gather(states, order);
+        for (auto& engaged : engaged_) gather(engaged, order);
     }
 
     struct Escape {  // a particle found behind a wall: it left the domain through it

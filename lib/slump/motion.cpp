@@ -6,9 +6,9 @@
 
 namespace demscale::slump {
 
-bool quantile_slower_than(const dem::Particles& p, double speed, double quantile) {
+bool quantile_slower_than(const dem::Particles& p, std::size_t mobile, double speed, double quantile) {
     const double limit = speed * speed;
-    const auto allowed = static_cast<std::size_t>(std::floor((1 - quantile) * static_cast<double>(p.mobile_count())));
+    const auto allowed = static_cast<std::size_t>(std::floor((1 - quantile) * static_cast<double>(mobile)));
     std::size_t fast = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
         if (!p.fixed[i] && !(p.velocity[i].squaredNorm() < limit) && ++fast > allowed) return false;

@@ -11,10 +11,10 @@
 
 namespace demscale::slump {
 
-// True when at most (1 − quantile) of the mobile spheres (in any order: fixed grains are not the
-// pile) move at |v| ≥ speed. Stops counting as soon as the allowance is exceeded, so a moving pile
-// costs a few spheres per call.
-bool quantile_slower_than(const dem::Particles& p, double speed, double quantile);
+// True when at most (1 − quantile) of the `mobile` spheres that are not fixed (in any order: fixed
+// grains are not the pile) move at |v| ≥ speed. Stops counting as soon as the allowance is
+// exceeded, so a moving pile costs a few spheres per call.
+bool quantile_slower_than(const dem::Particles& p, std::size_t mobile, double speed, double quantile);
 
 // What still moves: the spheres' speed |v| and rolling speed |ω| R (median, 99th percentile,
 // maximum), how many move at ≥ rest_speed, and how many of those lie beyond the radius that holds

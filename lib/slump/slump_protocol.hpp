@@ -54,16 +54,16 @@ inline std::vector<Wall> slump_walls(const SlumpScene& s) {
     return {PlaneWall{}, cone};
 }
 
-// Steps sim until all but (1 − rest_quantile) of the pile (the mobile spheres) have been slower than
-// the rest speed for rest_duration (true), or until `end` (false). still_since: s, −1 while moving.
-// before() runs before each step (interrupt checks), after() after it (samples, progress).
+// Steps sim until all but (1 − rest_quantile) of the pile (its `pile` mobile spheres) have been
+// slower than the rest speed for rest_duration (true), or until `end` (false). still_since: s, −1
+// while moving. before() runs before each step (interrupt checks), after() after it (samples, progress).
 template <class Sim, class Before, class After>
-bool run_until_rest(Sim& sim, const SlumpScene& s, double end, double& still_since, Before before, After after) {
+bool run_until_rest(Sim& sim, const SlumpScene& s, std::size_t pile, double end, double& still_since, Before before, After after) {
     while (sim.time() < end) {
         before();
         sim.step();
         after();
-        if (quantile_slower_than(sim.particles(), s.rest_speed_m_per_s, s.rest_quantile)) {
+        if (quantile_slower_than(sim.particles(), pile, s.rest_speed_m_per_s, s.rest_quantile)) {
             if (still_since < 0) still_since = sim.time();
             if (sim.time() - still_since >= s.rest_duration_s) return true;
         } else {
@@ -79,6 +79,7 @@ template <class Law>
 Particles pour_with(const SlumpScene& s, const Law& law, const std::function<void(const SlumpProgress&)>& progress,
                     const SpatialSort& sort, double& pour_time, std::uint64_t& pour_steps) {
     return pour_fill(s, [&](Particles pile) {
+        const std::size_t n = pile.size();
         pile.append(floor_grains(s));
         Simulation<Law, false> sim(std::move(pile), law, slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m, sort);
         const auto report_every = static_cast<std::size_t>(std::max(1.0, 0.005 / s.dt_s));
@@ -86,7 +87,7 @@ Particles pour_with(const SlumpScene& s, const Law& law, const std::function<voi
         auto check = [] {
             if (interrupt_requested()) throw Interrupted("interrupted while pouring the fill (no checkpoint: a rerun pours again)", "");
         };
-        run_until_rest(sim, s, s.pour_time_s, still_since, check, [&] {
+        run_until_rest(sim, s, n, s.pour_time_s, still_since, check, [&] {
             if (progress && sim.steps() % report_every == 0)
                 progress({"pour", pour_time + sim.time(), pour_time + s.pour_time_s, pour_steps + sim.steps(), 0,
                           [&] { return sim.in_input_order(); }});
@@ -165,7 +166,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     };
     auto rest = [&](const std::string& phase, double end) {
         return run_until_rest(
-            sim, s, end, st.still_since, [&] { if (interrupt_requested()) stop_here(); }, [&] { tick(phase, end); });
+            sim, s, res.particles, end, st.still_since, [&] { if (interrupt_requested()) stop_here(); }, [&] { tick(phase, end); });
     };
     if (st.phase == 0) {  // settle (skipped when starting from a settled state), then start the lift
         if (!phases.start) st.settled = rest("settle", s.settle_time_s);

@@ -99,12 +99,12 @@ TEST_CASE("Fill measures of constructed lattices: closed-form solid fraction, ha
 TEST_CASE("Rest criterion: a quantile of the speeds, so one rattler cannot veto rest", "[slump][rest]") {
     dem::Particles p;
     for (int i = 0; i < 200; ++i) p.add({0.01 * i, 0, 0}, 1e-3, 2500, dem::Vec3(0, 0, 1e-4));
-    CHECK(quantile_slower_than(p, 1e-3, 0.99));
+    CHECK(quantile_slower_than(p, p.size(), 1e-3, 0.99));
     p.velocity[17] = {0.5, 0, 0};  // one rattler (0.5 % of 200)
-    CHECK(quantile_slower_than(p, 1e-3, 0.99));
-    CHECK_FALSE(quantile_slower_than(p, 1e-3, 1.0));  // "every particle": vetoed
+    CHECK(quantile_slower_than(p, p.size(), 1e-3, 0.99));
+    CHECK_FALSE(quantile_slower_than(p, p.size(), 1e-3, 1.0));  // "every particle": vetoed
     p.velocity[18] = {0, 0.5, 0}, p.velocity[19] = {0, 0, -0.5};  // 1.5 %: the pile moves
-    CHECK_FALSE(quantile_slower_than(p, 1e-3, 0.99));
+    CHECK_FALSE(quantile_slower_than(p, p.size(), 1e-3, 0.99));
     const auto m = summarize_motion(p, p.size(), 1e-3);
     CHECK(m.moving == 3);
     CHECK(m.speed_max == Approx(0.5));
