@@ -39,7 +39,8 @@ struct Options {
     std::string scene = shipped("scenes/small_wet.toml");
     double seconds = 0.2;
     std::string sizes;     // bench --dem --sizes: the size sweep
-    std::optional<int> size_steps;  // none: max(100, 1e7 / particles)
+    int size_steps = 100;  // the same at every size
+    double size_timed = 1e7;  // particle-steps timed at least per size
 };
 
 // The exact solution's row: force, rupture, whether a bridge exists, and its shape; an
@@ -210,33 +211,37 @@ int run_dem_bench(const Options& o) {
 int run_size_sweep(const Options& o) {
     const auto scene = load_scene(o.scene);
     const auto sizes = parse_number_list(o.sizes, "--sizes", 99, 2e7);
-    if (o.size_steps && (*o.size_steps < 10 || *o.size_steps > 100000))
-        throw InputError("--steps", std::to_string(*o.size_steps), "10 to 100000");
+    if (o.size_steps < 10 || o.size_steps > 100000) throw InputError("--steps", std::to_string(o.size_steps), "10 to 100000");
     io::Table t;
     t.title = "DEM cost as the work grows: the scene's cone scaled to each size, packed to touching, stepped from rest";
     const auto load = load_average();
     t.metadata = {{"scene", display_path(o.scene)},
                   {"threads", std::to_string(omp_get_max_threads())},
                   {"load average before", load ? format_short(*load, 3) : "unknown"},
-                  {"timed", "the difference of runs of S and 3 S steps (set-up excluded), S = " +
-                                (o.size_steps ? std::to_string(*o.size_steps) : std::string("the larger of 100 and 1e7 / particles (seconds of work at any size)"))}};
-    t.columns = {"laws", "order", "particles", "steps", "wall_s", "particle_steps_per_s", "rate_vs_smallest", "peak_bytes_per_particle"};
+                  {"timed", "the difference of runs of S and 3 S steps (set-up excluded), S = " + std::to_string(o.size_steps) +
+                                " at every size (the same motion), the pair repeated until " + format_number(o.size_timed) + " particle-steps are timed"},
+                  {"contacts", "overlapping pairs of the pile's spheres per sphere at the end of the last run (bridges across a gap not counted): "
+                               "the work per particle, larger in deeper beds; contact_steps_per_s = particle_steps_per_s x contacts_per_particle"}};
+    t.columns = {"laws", "order", "particles", "steps", "wall_s", "particle_steps_per_s", "rate_vs_smallest",
+                 "contacts_per_particle", "contact_steps_per_s", "contact_rate_vs_smallest", "peak_bytes_per_particle"};
     for (const bool wet : {false, true})
         for (const bool shuffled : {false, true}) {
             auto s = scene;
             s.wet = wet;
-            double smallest = 0;
+            double smallest = 0, smallest_per_contact = 0;
             for (double n : sizes) {
                 std::cerr << "size sweep: " << (wet ? "wet" : "dry") << (shuffled ? ", shuffled" : "") << ", about " << n
                           << " particles ..." << std::endl;
-                const int steps = o.size_steps ? *o.size_steps : std::max(100, static_cast<int>(std::ceil(1e7 / n)));
-                const auto point = slump::time_size(s, n, steps, shuffled);
-                if (smallest == 0) smallest = point.particle_steps_per_s;
+                const auto point = slump::time_size(s, n, o.size_steps, shuffled, o.size_timed);
+                if (smallest == 0) smallest = point.particle_steps_per_s, smallest_per_contact = point.contact_steps_per_s;
                 const bool timed = point.particle_steps_per_s > 0 && smallest > 0;  // else the set-up's noise exceeded the steps
-                const io::Cell untimed(std::string("- (more --steps)"));
+                const bool per_contact = timed && point.contact_steps_per_s > 0 && smallest_per_contact > 0;  // 0: no contacts
+                const io::Cell untimed(std::string("- (more --steps)")), none(std::string("-"));
                 t.rows.push_back({wet ? "hertz+mindlin+mikami" : "hertz+mindlin", shuffled ? "shuffled" : "lattice", double(point.particles),
                                   double(point.steps), point.wall_s, timed ? io::Cell(point.particle_steps_per_s) : untimed,
-                                  timed ? io::Cell(point.particle_steps_per_s / smallest) : untimed,
+                                  timed ? io::Cell(point.particle_steps_per_s / smallest) : untimed, point.contacts_per_particle,
+                                  per_contact ? io::Cell(point.contact_steps_per_s) : none,
+                                  per_contact ? io::Cell(point.contact_steps_per_s / smallest_per_contact) : none,
                                   point.peak_bytes_per_particle > 0 ? io::Cell(point.peak_bytes_per_particle) : io::Cell(std::string("-"))});
             }
         }
@@ -300,7 +305,11 @@ std::vector<Command> bridge_commands(CLI::App& app) {
     bench->add_flag("--dem", o->dem, "benchmark the DEM engine instead: the lift-and-spread phase of one settled scene under each law combination");
     bench->add_option("--scene", o->scene, "scene for --dem (default: data/scenes/small_wet.toml)");
     bench->add_option("--sizes", o->sizes, "with --dem: the size sweep, particle counts, e.g. 5e3,1e4,1e5,1e6 (the scene's cone scaled)");
-    bench->add_option("--steps", o->size_steps, "with --sizes: steps S per timing unit (runs of S and 3 S steps; default the larger of 100 and 1e7 / particles)");
+    bench->add_option("--steps", o->size_steps, "with --sizes: steps S per timing unit, the same at every size (runs of S and 3 S steps, repeated until --timed particle-steps are timed)")
+        ->capture_default_str();
+    bench->add_option("--timed", o->size_timed, "with --sizes: particle-steps timed at least per size (pairs of runs repeated until reached)")
+        ->capture_default_str()
+        ->check(finite_positive);
     bench->add_option("--table", o->table, "tabulated model (default: data/bridge_table.csv)");
     bench->add_option("--format", o->format, "text | csv | markdown | json")->capture_default_str();
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/memory_use.hpp"
+#include "dem/neighbor_list.hpp"
 #include "slump/fill.hpp"
 #include "slump/slump_run.hpp"
 
@@ -51,26 +52,42 @@ SlumpResult stepped(SlumpScene s, const dem::Particles& start, int steps) {
 
 }  // namespace
 
-SizePoint time_size(const SlumpScene& scene, double particles, int steps, bool shuffled) {
+double contacts_per_particle(const dem::Particles& p) {
+    if (p.size() == 0) return 0;
+    dem::NeighborList touching(1e-9 * *std::min_element(p.radius.begin(), p.radius.end()));  // every overlapping pair listed
+    touching.build(p);
+    std::size_t contacts = 0;
+    for (const auto& [i, j] : touching.pairs())
+        if ((p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j]) ++contacts;
+    return static_cast<double>(contacts) / static_cast<double>(p.size());
+}
+
+SizePoint time_size(const SlumpScene& scene, double particles, int steps, bool shuffled, double timed_work) {
     // Two rounds: size from the small fill's count, then correct by the count reached.
     double factor = std::cbrt(particles / static_cast<double>(fill_cone(scene).size()));
     factor *= std::cbrt(particles / static_cast<double>(fill_cone(scaled_cone(scene, factor)).size()));
     const SlumpScene s = scaled_cone(scene, factor);
     const dem::Particles start = packed_fill(s, shuffled);
+    const double timed_per_pair = 2.0 * static_cast<double>(steps) * static_cast<double>(start.size());
+    const int pairs = std::max(1, static_cast<int>(std::ceil(timed_work / timed_per_pair)));
 
     stepped(s, start, steps);  // warm-up: threads started, memory touched
-    const SlumpResult shorter = stepped(s, start, steps);
-    const auto before = resident_bytes();
-    const bool peak_reset = reset_peak_resident();
-    const SlumpResult longer = stepped(s, start, 3 * steps);
-    const auto peak = peak_resident_bytes();
-
     SizePoint point;
     point.particles = start.size();
-    point.steps = longer.steps - shorter.steps;
-    point.wall_s = longer.wall_s - shorter.wall_s;
-    if (point.wall_s > 0)
+    const auto before = resident_bytes();
+    const bool peak_reset = reset_peak_resident();
+    for (int k = 0; k < pairs; ++k) {
+        const SlumpResult shorter = stepped(s, start, steps);
+        const SlumpResult longer = stepped(s, start, 3 * steps);
+        point.steps += longer.steps - shorter.steps;
+        point.wall_s += longer.wall_s - shorter.wall_s;
+        if (k + 1 == pairs) point.contacts_per_particle = contacts_per_particle(longer.final_state);
+    }
+    const auto peak = peak_resident_bytes();
+    if (point.wall_s > 0) {
         point.particle_steps_per_s = static_cast<double>(point.particles) * static_cast<double>(point.steps) / point.wall_s;
+        point.contact_steps_per_s = point.particle_steps_per_s * point.contacts_per_particle;
+    }
     if (before && peak && peak_reset && *peak > *before)
         point.peak_bytes_per_particle = static_cast<double>(*peak - *before) / static_cast<double>(point.particles);
     return point;

@@ -218,13 +218,14 @@ case $case_name in
     [ ! -e "$work/cache" ] || fail "a refused cached-run created the cache" ;;
   bench_size_sweep)
     # The size sweep's table: dry and wet, lattice order and shuffled, for each size; bad sizes refused.
-    expect 0 '^laws,order,particles,steps,wall_s,particle_steps_per_s,rate_vs_smallest,peak_bytes_per_particle$' -- \
-      "$demscale" bench --dem --sizes 300,600 --steps 10 --format csv
+    expect 0 '^laws,order,particles,steps,wall_s,particle_steps_per_s,rate_vs_smallest,contacts_per_particle,contact_steps_per_s,contact_rate_vs_smallest,peak_bytes_per_particle$' -- \
+      "$demscale" bench --dem --sizes 300,600 --steps 10 --timed 1 --format csv
     [ "$(grep -c '^hertz+mindlin\(+mikami\)\?,\(lattice\|shuffled\),' "$work/out")" -eq 8 ] || { cat "$work/out" >&2; fail "not 8 rows"; }
     grep -qi 'nan\|inf' "$work/out" && fail "NaN or inf in the sweep"
     expect 2 '--sizes = 300: accepted with --dem' -- "$demscale" bench --sizes 300
     expect 2 '--sizes = "5e7".*\(99, 2e\+07\)' -- "$demscale" bench --dem --sizes 5e7
-    expect 2 '--steps = 5: accepted 10 to 100000' -- "$demscale" bench --dem --sizes 300 --steps 5 ;;
+    expect 2 '--steps = 5: accepted 10 to 100000' -- "$demscale" bench --dem --sizes 300 --steps 5
+    expect 2 '--timed: value nan; accepted a finite number > 0' -- "$demscale" bench --dem --sizes 300 --timed nan ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"

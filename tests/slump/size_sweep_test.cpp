@@ -53,12 +53,38 @@ TEST_CASE("Size sweep: the packed start touches (pitch 2R), shuffled is a permut
     CHECK(p.position[0] != q.position[0]);
 }
 
-TEST_CASE("Size sweep: a tiny point times 2N steps of about the asked size", "[slump][size_sweep]") {
-    const auto point = time_size(small(), 300, 10, true);
+TEST_CASE("Size sweep: a tiny point times 2N steps of about the asked size, repeated for the asked work", "[slump][size_sweep]") {
+    const auto point = time_size(small(), 300, 10, true, 0);
     CHECK(point.particles > 250);
     CHECK(point.particles < 350);
-    CHECK(point.steps == 20);  // 30 less 10
+    CHECK(point.steps == 20);  // one pair: 30 less 10
     // Timed, or, when the set-up's noise exceeded 20 steps of 300 spheres, said to be untimed.
-    if (point.wall_s > 0) CHECK(point.particle_steps_per_s == Approx(300.0 * 20 / point.wall_s).epsilon(0.2));
-    else CHECK(point.particle_steps_per_s == 0);
+    if (point.wall_s > 0) {
+        CHECK(point.particle_steps_per_s == Approx(double(point.particles) * 20 / point.wall_s));
+        CHECK(point.contact_steps_per_s == Approx(point.particle_steps_per_s * point.contacts_per_particle));
+    } else {
+        CHECK(point.particle_steps_per_s == 0);
+    }
+    // A packed bed under gravity: every sphere presses on some below it (12 at most, 6 per pair).
+    CHECK(point.contacts_per_particle > 0.5);
+    CHECK(point.contacts_per_particle <= 6);
+    // Three pairs asked for by the work: 3 × (3·10 − 10) steps.
+    const auto repeated = time_size(small(), 300, 10, true, 2.5 * 20 * double(point.particles));
+    CHECK(repeated.steps == 60);
+}
+
+TEST_CASE("Size sweep: contacts per particle are the overlapping pairs, by hand and by brute force", "[slump][size_sweep]") {
+    dem::Particles row;  // a row of four: 1-2 overlap, 2-3 touch within rounding of nothing, 3-4 apart
+    const double r = 1e-3;
+    row.add({0, 0, 0}, r, 2500), row.add({1.9e-3, 0, 0}, r, 2500), row.add({3.9e-3, 0, 0}, r, 2500), row.add({6e-3, 0, 0}, r, 2500);
+    CHECK(contacts_per_particle(row) == Approx(1.0 / 4));  // 2-3: gap 0.1 mm
+    CHECK(contacts_per_particle(dem::Particles{}) == 0);
+    // The packed start pressed together by 1 %: every pair closer than 2R by brute force.
+    auto p = packed_fill(small(), false);
+    for (auto& x : p.position) x *= 0.99;
+    std::size_t brute = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size(); ++j) brute += (p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j];
+    REQUIRE(brute > p.size());
+    CHECK(contacts_per_particle(p) == Approx(double(brute) / double(p.size())).epsilon(1e-12));
 }
