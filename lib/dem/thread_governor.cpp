@@ -18,8 +18,8 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
     const int other = all ? 1 : most_;
     switch (stage_) {
     case Stage::settled:
-        // Probe after probe_every windows, or now if this one slowed down by half.
-        if (++settled_windows_ >= probe_every || (last_settled_ > 0 && per_step > 1.5 * last_settled_))
+        // Probe after hold_ windows, or now if this one slowed down by half.
+        if (++settled_windows_ >= hold_ || (last_settled_ > 0 && per_step > 1.5 * last_settled_))
             stage_ = Stage::probe, before_ = per_step, current_ = other;
         last_settled_ = per_step;
         return;
@@ -28,11 +28,16 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
         return;
     case Stage::confirm: {
         // The probe against the mean of the windows around it (a cost that drifts over the run
-        // cancels); one thread only when 5 % faster, so a window's noise is not taken for contention.
+        // cancels); one thread only when 15 % faster, so a window's noise is not taken for
+        // contention (all threads at most 1.18x slower than one is within the 1.2x kept).
         const double settled = 0.5 * (before_ + per_step);
         const bool probe_was_all = !all;
         const double one = probe_was_all ? settled : probe_, many = probe_was_all ? probe_ : settled;
-        current_ = one < 0.95 * many ? 1 : most_;
+        current_ = one < one_thread_margin * many ? 1 : most_;
+        // On one thread, look again soon, then ever less often while one thread keeps winning:
+        // a noisy window that chose one thread on a quiet machine costs a few windows, not
+        // probe_every; lasting contention costs a probe window in ever more.
+        hold_ = current_ == most_ ? probe_every : (all ? 2 : std::min(2 * hold_, probe_every));
         stage_ = Stage::settled, settled_windows_ = 0, last_settled_ = 0;
         return;
     }

@@ -4,6 +4,7 @@
 // bounds a hand count gives: one probe window (≥ 0.2 s) in the worse mode per 25.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstdint>
 
 #include "dem/thread_governor.hpp"
 
@@ -49,6 +50,27 @@ TEST_CASE("Thread governor: falls back to one thread when the others wait, withi
     // Contention that starts mid-run is noticed at the next window (1.5x slower) or probe.
     const auto late = run(100000, 1.4e-3, 1.0e-3, 50000, 8.0e-3);
     CHECK(late.wall < 1.2 * (50 + 50000 * 1.4e-3));
+}
+
+TEST_CASE("Thread governor: a noisy quiet machine keeps all threads nearly all the time", "[dem][threads]") {
+    // A shared machine's noise: every 150 steps (about one window) both modes' costs take a new
+    // factor, uniform in [0.7, 1.3] (the spread seen between runs on these machines); all threads
+    // stay 1.4 times faster at every moment. A probe can then see one thread up to 1.3/0.7 ≈ 1.9x
+    // faster by chance and choose it; it must not keep it for long.
+    ThreadGovernor g(2);
+    auto now = Clock::time_point{};
+    std::uint32_t state = 12345;  // a fixed linear congruential stream (portable)
+    double factor = 1;
+    int on_all = 0;
+    const int steps = 200000;
+    for (int k = 0; k < steps; ++k) {
+        if (k % 150 == 0) state = state * 1664525u + 1013904223u, factor = 0.7 + 0.6 * (state >> 8) / double(1u << 24);
+        const double cost = (g.threads() == 2 ? 1.0e-3 : 1.4e-3) * factor;
+        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
+        on_all += g.threads() == 2;
+        g.stepped(now);
+    }
+    CHECK(double(on_all) / steps > 0.9);
 }
 
 TEST_CASE("Thread governor: a cost that drifts over the run is not taken for contention", "[dem][threads]") {
