@@ -70,7 +70,8 @@ TEST_CASE("Thread governor: a noisy quiet machine keeps all threads nearly all t
         on_all += g.threads() == 2;
         g.stepped(now);
     }
-    CHECK(double(on_all) / steps > 0.9);
+    // 0.970 here; the previous rule (5 % margin, 24 windows on one thread) kept 0.952.
+    CHECK(double(on_all) / steps > 0.96);
 }
 
 TEST_CASE("Thread governor: a cost that drifts over the run is not taken for contention", "[dem][threads]") {
