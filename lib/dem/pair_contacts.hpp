@@ -249,12 +249,12 @@ private:
         const std::size_t n = pairs_.size();
         split_.assign(static_cast<std::size_t>(parts) + 1, n);
         split_[0] = 0;
-        std::size_t total = n;
-        if constexpr (!Ledger) total += acting_cost * static_cast<std::size_t>(std::count(engaged_.begin(), engaged_.end(), 1));
+        const std::size_t extra = Ledger ? 0 : acting_cost;  // a pair's weight: 1 + extra if it acted
+        const std::size_t total = n + (extra ? extra * static_cast<std::size_t>(std::count(engaged_.begin(), engaged_.end(), 1)) : 0);
         std::size_t done = 0, k = 0;
         for (int t = 1; t < parts; ++t) {
             const std::size_t target = total * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
-            for (; k < n && done < target; ++k) done += 1 + (Ledger ? 0 : acting_cost * engaged_[k]);
+            for (; k < n && done < target; ++k) done += 1 + extra * engaged_[k];
             split_[static_cast<std::size_t>(t)] = k;
         }
     }

@@ -1,5 +1,7 @@
 #include "dem/thread_governor.hpp"
 
+#include <algorithm>
+
 namespace demscale::dem {
 
 void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {

@@ -12,7 +12,6 @@
 // (simulation.hpp), so the choice changes only the speed.
 #pragma once
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
 

@@ -74,10 +74,10 @@ TEST_CASE("Size sweep: a tiny point times 2N steps of about the asked size, repe
 }
 
 TEST_CASE("Size sweep: contacts per particle are the overlapping pairs, by hand and by brute force", "[slump][size_sweep]") {
-    dem::Particles row;  // a row of four: 1-2 overlap, 2-3 touch within rounding of nothing, 3-4 apart
+    dem::Particles row;  // a row of four: 1-2 overlap by 0.1 mm, 2-3 and 3-4 apart by 0.1 mm
     const double r = 1e-3;
-    row.add({0, 0, 0}, r, 2500), row.add({1.9e-3, 0, 0}, r, 2500), row.add({3.9e-3, 0, 0}, r, 2500), row.add({6e-3, 0, 0}, r, 2500);
-    CHECK(contacts_per_particle(row) == Approx(1.0 / 4));  // 2-3: gap 0.1 mm
+    row.add({0, 0, 0}, r, 2500), row.add({1.9e-3, 0, 0}, r, 2500), row.add({4.0e-3, 0, 0}, r, 2500), row.add({6.1e-3, 0, 0}, r, 2500);
+    CHECK(contacts_per_particle(row) == Approx(1.0 / 4));
     CHECK(contacts_per_particle(dem::Particles{}) == 0);
     // The packed start pressed together by 1 %: every pair closer than 2R by brute force.
     auto p = packed_fill(small(), false);
