@@ -11,29 +11,31 @@
 namespace demscale::dem {
 
 struct PairShape {  // what a pair's radii and masses give
-    double r_eff, sqrt_r_eff, m_eff;  // R* (m), √R* (m^½), m* (kg)
+    double r_eff, sqrt_r_eff, m_eff, sqrt_m_eff;  // R* (m), √R* (m^½), m* (kg), √m* (kg^½)
+    double rolling_compliance;                    // 1/I_r (rolling_compliance below), 1/(kg m²)
 };
 
 // The partner index of a particle–wall contact.
 inline constexpr std::size_t a_wall = static_cast<std::size_t>(-1);
 
+// 1/(I + m R²) of particle k, the inverse of its inertia about a contact point; 0 if fixed.
+inline double rolling_compliance(const Particles& p, std::size_t k) {
+    return p.fixed[k] ? 0.0 : 1.0 / (p.inertia[k] + p.mass[k] * p.radius[k] * p.radius[k]);
+}
+
 // R*, √R* and m* of particle i with j, or with a wall (j = a_wall: i's own radius and mass). m*
 // is the mobile one's mass alone when the other is fixed (like a wall).
 inline PairShape pair_shape(const Particles& p, std::size_t i, std::size_t j) {
     const double ri = p.radius[i], mi = p.mass[i];
-    if (j == a_wall) return {ri, std::sqrt(ri), mi};
+    if (j == a_wall) return {ri, std::sqrt(ri), mi, std::sqrt(mi), rolling_compliance(p, i)};
     const double rj = p.radius[j], mj = p.mass[j], r_eff = ri * rj / (ri + rj);
-    return {r_eff, std::sqrt(r_eff), p.fixed[i] ? mj : p.fixed[j] ? mi : mi * mj / (mi + mj)};
+    const double m_eff = p.fixed[i] ? mj : p.fixed[j] ? mi : mi * mj / (mi + mj);
+    return {r_eff, std::sqrt(r_eff), m_eff, std::sqrt(m_eff), rolling_compliance(p, i) + rolling_compliance(p, j)};
 }
 
 // 2 R_i R_j / (R_i + R_j) of a pair of that shape: R_i itself for equal radii (bit for bit) and
 // at a wall (rj = 0). Computed where used; a law that does not read it costs nothing.
 inline double harmonic_radius(double ri, double rj, const PairShape& shape) { return rj == 0 || ri == rj ? ri : 2 * shape.r_eff; }
-
-// 1/(I + m R²) of particle k, the inverse of its inertia about a contact point; 0 if fixed.
-inline double rolling_compliance(const Particles& p, std::size_t k) {
-    return p.fixed[k] ? 0.0 : 1.0 / (p.inertia[k] + p.mass[k] * p.radius[k] * p.radius[k]);
-}
 
 // Contact of particle i with partner j (or a_wall) moving with velocity vj and spin wj, radius rj
 // (0 for a wall), at separation d = x_i − x_j, dist = |d| (the caller's range check already
@@ -45,11 +47,12 @@ DEMSCALE_HOT ContactPair contact_geometry(const Law& law, const Particles& p, do
     ContactPair c;
     const double ri = p.radius[i];
     c.overlap = ri + rj - dist;
-    c.normal = d / dist;
+    c.normal = d * (1.0 / dist);  // one division, not three
     c.r_eff = shape.r_eff;
     c.sqrt_r_eff = shape.sqrt_r_eff;
-    c.contact_radius = c.overlap > 0 ? std::sqrt(c.r_eff * c.overlap) : 0.0;
+    c.contact_radius = c.overlap > 0 ? c.sqrt_r_eff * std::sqrt(c.overlap) : 0.0;  // √R* √δ: one root per step
     c.m_eff = shape.m_eff;
+    c.sqrt_m_eff = shape.sqrt_m_eff;
     c.r_harmonic = harmonic_radius(ri, rj, shape);
     c.dt = dt;
     c.wall = wall;
@@ -64,7 +67,7 @@ DEMSCALE_HOT ContactPair contact_geometry(const Law& law, const Particles& p, do
     c.v_normal = c.v_rel.dot(c.normal);
     c.v_tangential = c.v_rel - c.v_normal * c.normal;
     c.w_rel = p.angular_velocity[i] - wj;
-    if (law.rolling_damping() > 0) c.rolling_compliance = rolling_compliance(p, i) + (wall ? 0.0 : rolling_compliance(p, j));
+    if (law.rolling_damping() > 0) c.rolling_compliance = shape.rolling_compliance;
     return c;
 }
 

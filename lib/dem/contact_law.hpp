@@ -78,7 +78,7 @@ struct ContactLaw {
         if (needs_gap_velocity()) out.tangential += cohesion.drag(c.overlap, c.r_harmonic, c.v_tangential, c.dt, c.wall, s.cohesion, lost);
         out.on_i += out.tangential;
         // Rolling laws get the secant normal stiffness F_el/δ (as LIGGGHTS' kn) and the tangential one.
-        out.rolling_torque = rolling.torque(c, elastic / c.overlap, tangential.stiffness(c), fn, s.rolling, lost);
+        out.rolling_torque = rolling.torque(c, normal.secant_stiffness(c), tangential.stiffness(c), fn, s.rolling, lost);
         return out;
     }
 
@@ -116,7 +116,7 @@ struct ContactLaw {
         if (c.overlap > 0) {
             e.normal = normal.elastic_energy(c);
             e.tangential = tangential.stored_energy(c, s.tangential);
-            e.rolling = rolling.stored_energy(c, normal.elastic_force(c) / c.overlap, tangential.stiffness(c), s.rolling);
+            e.rolling = rolling.stored_energy(c, normal.secant_stiffness(c), tangential.stiffness(c), s.rolling);
         }
         return e;
     }

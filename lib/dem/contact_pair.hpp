@@ -15,6 +15,7 @@ struct ContactPair {
     double r_eff = 0;      // R* = R_i R_j / (R_i + R_j)   (wall: R_i)
     double sqrt_r_eff = 0; // √R*, m^½ (Hertz; computed once per pair, not per step)
     double m_eff = 0;      // m* = m_i m_j / (m_i + m_j)   (wall: m_i)
+    double sqrt_m_eff = 0; // √m*, kg^½ (the dashpots; computed once per pair)
     double r_harmonic = 0; // 2 R_i R_j / (R_i + R_j), exactly R_i when the radii are equal (wall: R_i);
                            // the R of a liquid bridge between unequal spheres (Mikami et al. 1998)
     double overlap = 0;    // δ = R_i + R_j − |x_i − x_j|  (> 0 in contact, < 0 a gap)

@@ -225,7 +225,7 @@ private:
         // bits). A viscous bridge also drags across the gap: the full geometry below.
         if (const double overlap = p.radius[i] + p.radius[j] - dist; gap > 0 && overlap <= 0 && !law.needs_gap_velocity()) {
             out.force_i = (0.0 - law.pull_apart(overlap, harmonic_radius(p.radius[i], p.radius[j], shape), 0.0, dt, false, s, lost)) *
-                          (d / dist);
+                          (d * (1.0 / dist));
             return Acts::central;
         }
         const ContactPair c = contact_geometry(law, p, dt, i, d, dist, p.velocity[j], p.angular_velocity[j], p.radius[j], shape, j);

@@ -176,7 +176,7 @@ public:
     }
 
 private:
-    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-6";
+    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-7";
 
     // Sets the governor's thread count for one step and restores the caller's after it (also when
     // the step throws), then reports the step's end to the governor.

@@ -159,3 +159,61 @@ TEST_CASE("Time-step criteria: Rayleigh time of docs/model.md and refusal of a t
     CHECK_NOTHROW(check_time_step(1e-4, 86e-6, 0.2, true));
     CHECK_NOTHROW(check_time_step(1e-5, 86e-6, 0.2, false));
 }
+
+TEST_CASE("Hertz-Mindlin: one step's forces equal the textbook expressions for unequal spheres", "[dem][contact]") {
+    // The engine shares roots between the law's parts (a = sqrt(R*) sqrt(delta), sqrt(a) for both
+    // dashpots, sqrt(m*) once per pair): checked against the textbook forms written out here.
+    // F_n = 4/3 E* sqrt(R*) delta^(3/2) + 2 sqrt(5/6) beta sqrt(S_n m*) v_n, S_n = 2 E* sqrt(R* delta)
+    // (beta < 0, v_n < 0 approaching: the dashpot pushes apart);
+    // F_t = -S_t v_t dt + 2 sqrt(5/6) beta sqrt(S_t m*) v_t, S_t = 8 G* sqrt(R* delta) (fresh spring).
+    Material m;
+    m.density = rho;
+    m.restitution = 0.5;
+    m.friction = 10;  // far from the Coulomb limit
+    using Law = ContactLaw<NormalHertz, TangentialMindlin>;
+    const Law law(m);
+    const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
+    const double g_star = m.youngs_modulus / (4 * (2 - m.poisson_ratio) * (1 + m.poisson_ratio));
+    const double beta = std::log(0.5) / std::sqrt(std::log(0.5) * std::log(0.5) + std::numbers::pi * std::numbers::pi);
+    for (double delta : {1e-8, 3e-6, 4e-5}) {
+        Particles p;
+        const double ri = 1.3e-3, rj = 0.7e-3, dt = 1e-6;
+        const Vec3 n = Vec3(0.3, -0.5, 0.8).normalized();
+        p.add(Vec3::Zero(), rj, rho);
+        p.add((ri + rj - delta) * n, ri, rho, Vec3(0.02, 0.01, -0.05));
+        const Vec3 d = p.position[1] - p.position[0];
+        const ContactPair c =
+            contact_geometry(law, p, dt, 1, d, d.norm(), p.velocity[0], p.angular_velocity[0], p.radius[0], pair_shape(p, 1, 0), 0);
+        NoDissipation lost;
+        Law::StateFor<NoDissipation> state;
+        const ContactForce f = law.force(c, state, lost);
+        const double r_eff = ri * rj / (ri + rj), m_eff = p.mass[0] * p.mass[1] / (p.mass[0] + p.mass[1]);
+        const double overlap = ri + rj - d.norm(), v_n = p.velocity[1].dot(d / d.norm());
+        const double s_n = 2 * e_star * std::sqrt(r_eff * overlap), s_t = 8 * g_star * std::sqrt(r_eff * overlap);
+        const double f_n = 4.0 / 3.0 * e_star * std::sqrt(r_eff) * std::pow(overlap, 1.5) + 2 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(s_n * m_eff) * v_n;
+        const Vec3 v_t = p.velocity[1] - v_n * (d / d.norm());
+        const Vec3 f_t = -s_t * v_t * dt + 2 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(s_t * m_eff) * v_t;
+        INFO("delta = " << delta);
+        CHECK(f.on_i.dot(c.normal) == Approx(f_n).epsilon(1e-13));
+        CHECK((f.tangential - f_t).norm() <= 1e-13 * f_t.norm());
+    }
+}
+
+TEST_CASE("Mindlin spring: a contact that turned keeps its spring's length, in the new tangent plane", "[dem][contact]") {
+    Material m;
+    m.density = rho;
+    m.restitution = 1.0;  // no dashpot: the force is the spring's alone
+    m.friction = 10;
+    const TangentialMindlin law(m);
+    ContactPair c;
+    c.r_eff = 0.5e-3, c.sqrt_r_eff = std::sqrt(0.5e-3), c.m_eff = 1e-5, c.sqrt_m_eff = std::sqrt(1e-5), c.overlap = 1e-6;
+    c.contact_radius = std::sqrt(c.r_eff * c.overlap), c.dt = 1e-6;
+    c.normal = Vec3(0.1, 0.2, 1).normalized(), c.v_tangential = Vec3::Zero();
+    TangentialMindlin::StateFor<NoDissipation> s;
+    s.spring = Vec3(3e-7, -1e-7, 0);  // in the plane of the normal (0, 0, 1) it had
+    NoDissipation lost;
+    const Vec3 f = law.force(c, 1.0, s, lost);
+    CHECK(std::abs(s.spring.dot(c.normal)) <= 1e-22);
+    CHECK(s.spring.norm() == Approx(Vec3(3e-7, -1e-7, 0).norm()).epsilon(1e-14));
+    CHECK((f + 8 * effective_shear(m) * c.contact_radius * s.spring).norm() <= 1e-14 * f.norm());
+}

@@ -130,7 +130,7 @@ TEST_CASE("Rolling springs: an elastic step turns the torque by k_r w dt, with A
     // or k_r = k_t R*^2 with Mindlin's k_t = 8 G* sqrt(R* delta) (Iwashita & Oda 1998, LIGGGHTS' epsd2).
     const Material m = wall_material(0.5, 0.1);
     ContactPair c;
-    c.r_eff = 0.5e-3, c.sqrt_r_eff = std::sqrt(0.5e-3), c.m_eff = 1e-5, c.overlap = 1e-6, c.contact_radius = std::sqrt(0.5e-3 * 1e-6);
+    c.r_eff = 0.5e-3, c.sqrt_r_eff = std::sqrt(0.5e-3), c.m_eff = 1e-5, c.sqrt_m_eff = std::sqrt(1e-5), c.overlap = 1e-6, c.contact_radius = std::sqrt(0.5e-3 * 1e-6);
     c.normal = Vec3::UnitZ(), c.v_rel = c.v_tangential = Vec3::Zero(), c.v_normal = 0;
     c.w_rel = Vec3(0, 10, 0), c.dt = 1e-6;
     const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));

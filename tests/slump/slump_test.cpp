@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
@@ -88,11 +89,13 @@ TEST_CASE("Dry pile on a rough floor: repose angle in the range for its friction
     // Expected: free-flowing granular piles stand at about 20-40 degrees (Carr's classification starts at
     // 25 for "very free flowing"; smooth monodisperse spheres sit at its low end), and the angle rises
     // with both frictions (Zhou et al. 2001, Phys. Rev. E 64, 021301). The pile has ~390 spheres, so one
-    // seed varies by a few degrees: the mean of three seeds is tested. Measured with the poured fill
-    // (docs/rest-and-damping.md): 25.3, 22.1, 21.2; a lattice fill stands steeper (33.1, 32.8, 34.5).
+    // seed varies by 3-4 degrees (sd of six seeds; seeds 1-6 stood at 14.6-25.4 degrees, mean 21.6,
+    // docs/rest-and-damping.md): the mean of six seeds is tested, against the range less its own
+    // spread (about 1.5 degrees), so that the bound tests the physics, not one seed's luck.
     const auto scene = load_slump_scene(DEMSCALE_SOURCE_DIR "/data/scenes/repose_rough.toml");
     double sum = 0;
-    for (unsigned seed : {1u, 2u, 3u}) {
+    const std::vector<unsigned> seeds{1, 2, 3, 4, 5, 6};
+    for (unsigned seed : seeds) {
         auto s = scene;
         s.seed = seed;
         const auto r = run_slump(s);
@@ -107,8 +110,8 @@ TEST_CASE("Dry pile on a rough floor: repose angle in the range for its friction
         CHECK(r.final_state.size() == r.particles);  // the floor's grains are not part of the pile
         sum += r.final.repose_angle_deg.value();
     }
-    const double mean = sum / 3;
-    CHECK(mean > 20);
+    const double mean = sum / static_cast<double>(seeds.size());
+    CHECK(mean > 18);
     CHECK(mean < 40);
     auto slippery = scene;  // sliding friction 0.2, nearly free rolling: the pile flows out further
     slippery.material.friction = 0.2;

@@ -16,17 +16,19 @@ namespace demscale::dem {
 struct NormalHertz {
     double e_star;  // Pa
     double beta;    // damping ratio (≤ 0)
+    double dashpot; // 2 √(5/6) β √(2E*), Pa^½: F_d = dashpot √a √m* v_n with a = √(R* δ)
 
-    explicit NormalHertz(const Material& m) : e_star(effective_youngs(m)), beta(damping_ratio(m.restitution)) {}
+    explicit NormalHertz(const Material& m)
+        : e_star(effective_youngs(m)), beta(damping_ratio(m.restitution)), dashpot(2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(2.0 * e_star)) {}
 
     // Tangent normal stiffness S_n = dF_el/dδ, which scales the damping.
     double stiffness(const ContactPair& c) const { return 2.0 * e_star * c.contact_radius; }
-    double elastic_force(const ContactPair& c) const {
-        return 4.0 / 3.0 * e_star * c.sqrt_r_eff * c.overlap * std::sqrt(c.overlap);
-    }
-    double damping_force(const ContactPair& c) const {
-        return 2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(stiffness(c) * c.m_eff) * c.v_normal;
-    }
+    // 4/3 E* √R* δ^(3/2) = 4/3 E* a δ: the contact radius carries the root.
+    double elastic_force(const ContactPair& c) const { return secant_stiffness(c) * c.overlap; }
+    // F_el / δ = 4/3 E* a, N/m (the rolling laws' k_n, as LIGGGHTS' kn).
+    double secant_stiffness(const ContactPair& c) const { return 4.0 / 3.0 * e_star * c.contact_radius; }
+    // −2 √(5/6) β √(S_n m*) v_n with √(S_n m*) = √(2E*) √a √m*: √a is the tangential dashpot's too.
+    double damping_force(const ContactPair& c) const { return dashpot * std::sqrt(c.contact_radius) * c.sqrt_m_eff * c.v_normal; }
     // Stored energy 8/15 E* √R* δ^(5/2).
     double elastic_energy(const ContactPair& c) const {
         return 8.0 / 15.0 * e_star * c.sqrt_r_eff * std::pow(c.overlap, 2.5);

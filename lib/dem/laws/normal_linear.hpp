@@ -16,6 +16,7 @@ struct NormalLinear {
     explicit NormalLinear(const Material& m) : k(m.linear_stiffness), beta(damping_ratio(m.restitution)) {}
 
     double elastic_force(const ContactPair& c) const { return k * c.overlap; }
+    double secant_stiffness(const ContactPair&) const { return k; }  // F_el / δ, N/m
     double damping_force(const ContactPair& c) const { return 2.0 * beta * std::sqrt(k * c.m_eff) * c.v_normal; }
     double elastic_energy(const ContactPair& c) const { return 0.5 * k * c.overlap * c.overlap; }
 };

@@ -55,10 +55,9 @@ struct TangentialHistory {
         // Keep the spring in the current tangent plane, at its length (the pair may have rotated).
         const double length2 = s.spring.squaredNorm();
         if (length2 > 0) {  // a fresh contact has none to turn
-            const double length = std::sqrt(length2);
             s.spring -= c.normal * c.normal.dot(s.spring);
-            const double projected = s.spring.norm();
-            if (projected > 0) s.spring *= length / projected;
+            const double projected2 = s.spring.squaredNorm();
+            if (projected2 > 0) s.spring *= std::sqrt(length2 / projected2);  // one root, not two
         }
         const double st = stiffness(c);
         const double stored_before = 0.5 * st * length2;  // the rotation kept the length
@@ -67,7 +66,7 @@ struct TangentialHistory {
             s.stiffness.value = st;
         }
         s.spring += c.v_tangential * c.dt;
-        const double damping = law.damping(st, c.m_eff);  // ≤ 0
+        const double damping = law.damping(c, st);  // ≥ 0 (β ≤ 0): opposes v_t
         Vec3 f = -st * s.spring - damping * c.v_tangential;
         const double limit = mu * std::abs(normal_force);
         if (const double magnitude = beyond_limit(f.squaredNorm(), limit)) {  // sliding: cap at μF_n, spring consistent
@@ -101,9 +100,12 @@ struct TangentialHistory {
 // (the Hertzian form, as LIGGGHTS' hertz tangential history).
 struct MindlinSpring {
     double g_star, beta;
-    explicit MindlinSpring(const Material& m) : g_star(effective_shear(m)), beta(damping_ratio(m.restitution)) {}
+    double dashpot;  // 2 √(5/6) β √(8G*), Pa^½
+    explicit MindlinSpring(const Material& m)
+        : g_star(effective_shear(m)), beta(damping_ratio(m.restitution)), dashpot(2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(8.0 * g_star)) {}
     double stiffness(const ContactPair& c) const { return 8.0 * g_star * c.contact_radius; }
-    double damping(double st, double m_eff) const { return -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * m_eff); }
+    // −2 √(5/6) β √(S_t m*) = −dashpot √a √m*: the same √a as the normal dashpot's (S_t is st).
+    double damping(const ContactPair& c, double) const { return -dashpot * std::sqrt(c.contact_radius) * c.sqrt_m_eff; }
 };
 
 // Linear spring k_t = κ k_n (Material::tangential_stiffness_ratio, 2/7 by default: then a sticking
@@ -114,7 +116,7 @@ struct LinearTangentialSpring {
     explicit LinearTangentialSpring(const Material& m)
         : k_t(m.tangential_stiffness_ratio * m.linear_stiffness), beta(damping_ratio(m.restitution)) {}
     double stiffness(const ContactPair&) const { return k_t; }
-    double damping(double st, double m_eff) const { return -2.0 * beta * std::sqrt(st * m_eff); }
+    double damping(const ContactPair& c, double st) const { return -2.0 * beta * std::sqrt(st * c.m_eff); }
 };
 
 using TangentialMindlin = TangentialHistory<MindlinSpring>;
