@@ -27,7 +27,8 @@ struct NormalHertz {
     double elastic_force(const ContactPair& c) const { return secant_stiffness(c) * c.overlap; }
     // F_el / δ = 4/3 E* a, N/m (the rolling laws' k_n, as LIGGGHTS' kn).
     double secant_stiffness(const ContactPair& c) const { return 4.0 / 3.0 * e_star * c.contact_radius; }
-    // −2 √(5/6) β √(S_n m*) v_n with √(S_n m*) = √(2E*) √a √m*: √a is the tangential dashpot's too.
+    // 2 √(5/6) β √(S_n m*) v_n (β ≤ 0, v_n < 0 approaching: it pushes apart) with √(S_n m*) =
+    // √(2E*) √a √m*: √a is the tangential dashpot's too.
     double damping_force(const ContactPair& c) const { return dashpot * std::sqrt(c.contact_radius) * c.sqrt_m_eff * c.v_normal; }
     // Stored energy 8/15 E* √R* δ^(5/2).
     double elastic_energy(const ContactPair& c) const {
