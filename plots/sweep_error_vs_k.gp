@@ -7,34 +7,34 @@ set datafile columnheaders
 set grid lc rgb '#dddddd'
 set key top right box opaque
 # data: sweep_verdicts.csv
-set multiplot layout 1,3 title "Coarse ensembles against the fine ensemble, data/scenes/kantro\\_wet.toml\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd)}" font ',13'
+set multiplot layout 1,3 title "Coarse ensembles against the fine ensemble, data/scenes/kantro\\_wet.toml\n{/*0.85 bars: 95 % intervals; dashed: tolerance; grey band: fine ensemble's own spread (±1 sd); points not joined: only these exponents were run}" font ',13'
 set xlabel 'surface-tension exponent k  (γ̄ = γ S_f^k)'
 set offsets graph 0.05, graph 0.05, 0, 0
 set key below horizontal box
 set ylabel 'slump difference (% of fill height)'
 plot \
-  -0.6938144301905416 with filledcurves y1=0.6938144301905416 fc rgb '#e6e6e6' title 'fine noise', \
+  -1.5227328689510407 with filledcurves y1=1.5227328689510407 fc rgb '#e6e6e6' title 'fine noise', \
   5 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
   -5 with lines lc rgb '#aa0000' dt 2 notitle, \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.96', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 2.74', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorlines lw 2 lc 4 pt 8 title 'S_f = 3.84'
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorbars lw 2 ps 1.5 lc 1 pt 5 title 'S_f = 1.4', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorbars lw 2 ps 1.5 lc 2 pt 6 title 'S_f = 1.96', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorbars lw 2 ps 1.5 lc 3 pt 7 title 'S_f = 2.74', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"slump_pct":"slump_low_pct":"slump_high_pct" with yerrorbars lw 2 ps 1.5 lc 4 pt 8 title 'S_f = 3.84'
 set ylabel 'spread d95 difference (%)'
 plot \
-  -0.7888686445644905 with filledcurves y1=0.7888686445644905 fc rgb '#e6e6e6' title 'fine noise', \
+  -0.7273522295131634 with filledcurves y1=0.7273522295131634 fc rgb '#e6e6e6' title 'fine noise', \
   5 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
   -5 with lines lc rgb '#aa0000' dt 2 notitle, \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.96', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 2.74', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorlines lw 2 lc 4 pt 8 title 'S_f = 3.84'
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorbars lw 2 ps 1.5 lc 1 pt 5 title 'S_f = 1.4', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorbars lw 2 ps 1.5 lc 2 pt 6 title 'S_f = 1.96', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorbars lw 2 ps 1.5 lc 3 pt 7 title 'S_f = 2.74', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"spread_pct":"spread_low_pct":"spread_high_pct" with yerrorbars lw 2 ps 1.5 lc 4 pt 8 title 'S_f = 3.84'
 set ylabel 'profile distance (%)'
 plot \
-  0*7.435339112306226 with filledcurves y1=7.435339112306226 fc rgb '#e6e6e6' title 'fine noise', \
+  0*5.629147336570027 with filledcurves y1=5.629147336570027 fc rgb '#e6e6e6' title 'fine noise', \
   20 with lines lc rgb '#aa0000' dt 2 title 'tolerance', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 1 pt 5 title 'S_f = 1.4', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.96', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 2.74', \
-  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorlines lw 2 lc 4 pt 8 title 'S_f = 3.84'
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorbars lw 2 ps 1.5 lc 1 pt 5 title 'S_f = 1.4', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorbars lw 2 ps 1.5 lc 2 pt 6 title 'S_f = 1.96', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 2.74) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorbars lw 2 ps 1.5 lc 3 pt 7 title 'S_f = 2.74', \
+  'sweep_verdicts.csv' using (abs(column("sf") - 3.84) < 1e-9 ? column("exponent") : NaN):"profile_pct":"profile_low_pct":"profile_high_pct" with yerrorbars lw 2 ps 1.5 lc 4 pt 8 title 'S_f = 3.84'
 unset multiplot

@@ -11,7 +11,7 @@ set title "Speed against error, data/scenes/kantro\\_wet.toml\n{/*0.85 labels: e
 set xlabel 'speed-up (fine particle-steps / coarse particle-steps)'
 set ylabel 'profile distance (%)'
 set logscale x
-set xrange [1.6038476415288663:462.45770910270056]
+set xrange [1.5858299180534294:446.577588916301]
 set yrange [0:*]
 set offsets graph 0.05, graph 0.1, graph 0.1, graph 0.05
 plot \
