@@ -50,7 +50,12 @@ std::string summary(const stats::ExponentEstimate& e) {
         std::string& list = e.ci.contains(k) ? in : out;
         list += (list.empty() ? "" : ", ") + format_short(k);
     }
-    return s + "; inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
+    s += "; inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
+    if (e.split_levels > 0)
+        s += "; WARNING: rests on " + std::to_string(e.split_levels) + (e.split_levels == 1 ? " level" : " levels") +
+             " whose seeds split between the ends of the response (seeds_split): the interval understates the uncertainty; "
+             "add seeds there";
+    return s;
 }
 
 int run_estimate(const Options& o) {

@@ -22,6 +22,18 @@ constexpr Group groups[] = {{1, "stress, Eq. 11"}, {2, "Bond number"}, {3, "Tabl
 
 std::string sf_label(const stats::ExponentEstimate& e) { return e.sf == 0 ? "all" : format_short(e.sf, 3); }
 
+// "no", or "2 low, 4 high": seeds in the lowest and highest third of the span of the level means.
+std::string split_label(const slump::ResponseStudy& study, const slump::ResponseEnsemble& e) {
+    if (!study.wet) return "-";
+    const auto* s = slump::split_of(study, e);
+    return s ? std::to_string(s->low) + " low, " + std::to_string(s->high) + " high" : "no";
+}
+
+constexpr const char* split_note =
+    "seeds_split: seeds in the lowest and in the highest third of the span of all level means (a column that stood and one that "
+    "slumped at the same surface tension); the bootstrap interval of an estimate resting on such a level understates its "
+    "uncertainty: more seeds there (docs/exponent-estimate.md)";
+
 std::vector<stats::ResponseCurve> curves_of(const slump::ResponseStudy& s, const stats::ExponentEstimate& e) {
     if (e.sf == 0) return s.coarse_curves;
     for (const auto& c : s.coarse_curves)
@@ -36,7 +48,7 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     t.title = "Response of the slump test to surface tension, per scale factor (" + scene_label + ")";
     t.metadata = {{"scene", scene_label}};
     t.columns = {"sf", "gamma_n_per_m", "seeds", "slump_over_height", "slump_low", "slump_high", "spread_d95_over_d0",
-                 "spread_low", "spread_high", "at_rest"};
+                 "spread_low", "spread_high", "at_rest", "seeds_split"};
     auto add = [&](const slump::ResponseEnsemble& e) {
         const auto& s = e.slump_over_height;
         const auto& d = e.spread_over_diameter;
@@ -44,13 +56,14 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
         for (const auto& r : e.runs) rest += r.result.came_to_rest;
         t.rows.push_back({e.sf, study.wet ? io::Cell(e.gamma) : io::Cell(io::not_available), static_cast<double>(e.runs.size()), s.mean,
                           s.ci.low, s.ci.high, d.mean, d.ci.low, d.ci.high,
-                          std::to_string(rest) + " of " + std::to_string(e.runs.size())});
+                          std::to_string(rest) + " of " + std::to_string(e.runs.size()), split_label(study, e)});
     };
     for (const auto& e : study.fine) add(e);
     for (const auto& levels : study.coarse)
         for (const auto& e : levels) add(e);
     t.notes.push_back("means over the seeds with 95 % Student t intervals; d0: the cone's bottom diameter");
     if (study.wet) t.notes.push_back("coarse levels: gamma is the coarse run's own surface tension (gamma-bar)");
+    if (!study.split.empty()) t.notes.push_back(split_note);
     return t;
 }
 
@@ -59,7 +72,8 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
     t.title = "Measured exponent k-hat of gamma-bar = gamma S_f^k, from the shift of the response curves (" + scene_label + ")";
     t.metadata = {{"estimator", "least-squares shift of the coarse means onto the fine curve (monotone cubic through the fine means, "
                                 "flat beyond), k = shift / ln S_f; 95 % percentile bootstrap over seeds (docs/exponent-estimate.md)"}};
-    t.columns = {"sf", "k_hat", "k_low", "k_high", "determined", "rms_at_k_hat", "rms_at_k1", "rms_at_k2", "rms_at_k3", "groups_inside"};
+    t.columns = {"sf", "k_hat", "k_low", "k_high", "determined", "split_levels", "rms_at_k_hat", "rms_at_k1", "rms_at_k2", "rms_at_k3",
+                 "groups_inside"};
     for (const auto& e : study.estimates) {
         const auto cs = curves_of(study, e);
         std::string inside;
@@ -67,13 +81,15 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
             if (e.ci.contains(g.k)) inside += (inside.empty() ? "" : ", ") + std::string(g.name) + " k = " + format_short(g.k);
         if (!e.determined) inside = "undetermined: no unique shift maps the curves onto each other";
         else if (inside.empty()) inside = "none";
-        t.rows.push_back({sf_label(e), e.k, e.ci.low, e.ci.high, e.determined ? "yes" : "no", e.rms,
+        t.rows.push_back({sf_label(e), e.k, e.ci.low, e.ci.high, e.determined ? "yes" : "no", static_cast<double>(e.split_levels), e.rms,
                           stats::shift_residual_rms(study.fine_curve, cs, 1), stats::shift_residual_rms(study.fine_curve, cs, 2),
                           stats::shift_residual_rms(study.fine_curve, cs, 3), inside});
     }
     t.notes.push_back("sf 'all': one k for every scale factor together");
     t.notes.push_back("rms: root mean square difference of the coarse means (slump over fill height) from the shifted fine curve");
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
+    t.notes.push_back("split_levels: the levels it rests on whose seeds split between the ends of the response (response table, "
+                      "seeds_split); with any, the interval understates the uncertainty");
     return t;
 }
 

@@ -325,15 +325,22 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         verdict_section.blocks.push_back(Paragraph{
             "Measured exponent (" + (joint.sf == 0 ? std::string("all S_f together") : "S_f = " + format_short(joint.sf)) +
             "): k-hat = " + format_short(joint.k, 3) + " [" + format_short(joint.ci.low, 3) + ", " +
-            format_short(joint.ci.high, 3) + "]" + (joint.determined ? "" : ", undetermined") + " (section Measured exponent)."});
+            format_short(joint.ci.high, 3) + "]" + (joint.determined ? "" : ", undetermined") +
+            (joint.split_levels == 0 ? std::string()
+                                     : ", an interval that understates the uncertainty: it rests on " + std::to_string(joint.split_levels) +
+                                           (joint.split_levels == 1 ? " level" : " levels") + " whose seeds split (Caveats)") +
+            " (section Measured exponent)."});
         for (const auto& e : est.estimates)
             if (!e.determined)
                 caveats.push_back({e.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(e.sf),
                                    "measured exponent undetermined (no unique shift maps the curves onto each other)"});
         auto not_at_rest = [&](const slump::ResponseEnsemble& e) {
-            if (!e.all_at_rest())
-                caveats.push_back({"S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) + " N/m",
-                                   "measured exponent: runs not all at rest"});
+            const std::string where = "S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) + " N/m";
+            if (!e.all_at_rest()) caveats.push_back({where, "measured exponent: runs not all at rest"});
+            if (const auto* split = slump::split_of(est, e))
+                caveats.push_back({where, "measured exponent: seeds split (" + std::to_string(split->low) + " low, " +
+                                              std::to_string(split->high) + " high of " + std::to_string(split->seeds) +
+                                              "): the bootstrap interval understates the uncertainty"});
         };
         for (const auto& e : est.fine) not_at_rest(e);
         for (const auto& levels : est.coarse)

@@ -101,6 +101,12 @@ void validate_response_plan(const ResponsePlan& plan) {
     for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, 0, {}}), plan.batch.force_dt);
 }
 
+const stats::SplitLevel* split_of(const ResponseStudy& study, const ResponseEnsemble& e) {
+    for (const auto& s : study.split)
+        if (s.sf == e.sf && s.x == std::log(e.gamma)) return &s;  // x as curve() computes it
+    return nullptr;
+}
+
 std::vector<StudyRun*> ResponseStudy::all_runs() {
     std::vector<StudyRun*> all;
     for (auto& e : fine)
@@ -142,6 +148,7 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
         for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
             study.coarse_curves.push_back(curve(plan.scale_factors[s], study.coarse[s]));
         study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+        study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
     } else {
         for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
             study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front(), plan.fine));

@@ -52,9 +52,13 @@ struct ResponseStudy {
     stats::ResponseCurve fine_curve;                    // slump over height against ln γ
     std::vector<stats::ResponseCurve> coarse_curves;
     std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only)
+    std::vector<stats::SplitLevel> split;               // levels whose seeds split (wet only; stats::split_levels)
     std::vector<DryBaseline> baselines;                 // dry only
     double wall_s = 0;
 };
+
+// Ensemble e's entry in study.split, or null when its seeds did not split.
+const stats::SplitLevel* split_of(const ResponseStudy& study, const ResponseEnsemble& e);
 
 // `levels` surface tension factors log-spaced from lo to hi, each rounded to 12 digits so that a
 // level meant to be 1 (or 2) is exactly that and shares its cached runs with the study's. Throws

@@ -114,6 +114,28 @@ void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) 
 
 double interpolate_response(const ResponseCurve& fine, double x) { return interpolate(means_of(fine), x); }
 
+std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
+    std::vector<const ResponseCurve*> curves{&fine};
+    for (const auto& c : coarse) curves.push_back(&c);
+    double lo = INFINITY, hi = -INFINITY;  // the span of the level means
+    for (const auto* c : curves)
+        for (const auto& l : c->levels)
+            if (!l.y.empty()) {
+                const double mean = std::accumulate(l.y.begin(), l.y.end(), 0.0) / static_cast<double>(l.y.size());
+                lo = std::min(lo, mean), hi = std::max(hi, mean);
+            }
+    std::vector<SplitLevel> split;
+    if (!(hi > lo)) return split;  // no response to split across
+    const double third = (hi - lo) / 3;
+    for (const auto* c : curves)
+        for (const auto& l : c->levels) {
+            SplitLevel s{c->sf, l.x, 0, 0, l.y.size()};
+            for (double y : l.y) s.low += y <= lo + third, s.high += y >= hi - third;
+            if (s.low > 0 && s.high > 0) split.push_back(s);
+        }
+    return split;
+}
+
 double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse, double k) {
     check(fine, coarse);
     std::vector<MeanCurve> c;
@@ -155,6 +177,7 @@ std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const
         const std::vector<Shift> k = estimate_all(f, cs);
         for (std::size_t s = 0; s < sets.size(); ++s) boot[s].push_back(k[s].k);
     }
+    const std::vector<SplitLevel> split = split_levels(fine, coarse);
     std::vector<ExponentEstimate> out;
     for (std::size_t s = 0; s < sets.size(); ++s) {
         std::vector<double>& v = boot[s];
@@ -169,6 +192,8 @@ std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const
         e.rms = shift_residual_rms(fine, chosen, e.k);
         const double margin = 0.051;  // one grid step: an interval touching a bound reached it
         e.determined = k_hat[s].unique && e.ci.low > search.k_min + margin && e.ci.high < search.k_max - margin;
+        for (const SplitLevel& l : split)
+            e.split_levels += l.sf == 1 || std::any_of(chosen.begin(), chosen.end(), [&](const auto& c) { return c.sf == l.sf; });
         out.push_back(e);
     }
     return out;

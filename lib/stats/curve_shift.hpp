@@ -14,6 +14,11 @@
 // fixed generator seed so that an estimate repeats. k is undetermined when the objective is flat
 // at its minimum (the coarse levels lie on the plateaus: many shifts fit equally) or the interval
 // reaches the search bounds.
+//
+// Split levels: a level whose seeds fall at both ends of the response (a column that stood and one
+// that slumped at the same cohesion) is a coin toss that a bootstrap over a few seeds cannot weigh:
+// the interval then understates the uncertainty, and the estimate says how many such levels it
+// rests on.
 #pragma once
 
 #include <cstddef>
@@ -45,7 +50,19 @@ struct ExponentEstimate {
     Interval ci;              // 95 % percentile bootstrap interval
     double rms = 0;           // root mean square residual of the coarse means at k̂
     bool determined = false;  // a unique minimum, and the interval inside the search bounds
+    std::size_t split_levels = 0;  // levels it rests on (the fine curve's and its coarse curves') that split
 };
+
+// A level with seeds at both ends of the response: at least one in the lowest third of the span of
+// all the curves' level means (fine and coarse) and at least one in the highest third.
+struct SplitLevel {
+    double sf = 1;  // its curve's scale factor (fine: 1)
+    double x = 0;
+    std::size_t low = 0, high = 0, seeds = 0;  // seeds in the lowest third, in the highest, in all
+};
+
+// The split levels of the fine curve, then of each coarse curve (in their order, levels as given).
+std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse);
 
 // The fine curve's value at x: the interpolant through the levels' means, flat beyond them.
 double interpolate_response(const ResponseCurve& fine, double x);

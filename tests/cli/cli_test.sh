@@ -278,6 +278,8 @@ case $case_name in
     done
     grep -qi 'nan\|inf' "$work/e/estimate_exponent.csv" "$work/e/estimate_response.csv" && fail "NaN or inf in the estimate"
     [ "$(grep -c '^1.4,' "$work/e/estimate_response.csv")" -eq 3 ] || fail "not three coarse levels"
+    grep -v '^#' "$work/e/estimate_response.csv" | head -1 | grep -q ',seeds_split$' || fail "response table does not say which levels split"
+    grep -v '^#' "$work/e/estimate_exponent.csv" | head -1 | grep -q ',split_levels,' || fail "estimates do not count the split levels they rest on"
     "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1
     grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
     # A dry scene has nothing to vary: the dry control, one level per S_f.

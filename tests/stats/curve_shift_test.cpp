@@ -108,3 +108,41 @@ TEST_CASE("Curve shift: bad curves are refused", "[stats][exponent]") {
     coarse.sf = 1.0;
     CHECK_THROWS_AS(estimate_exponent(fine, {coarse}), std::invalid_argument);  // S_f = 1
 }
+
+TEST_CASE("Curve shift: a level whose seeds stood and slumped is named, and the estimates resting on it say so", "[stats][exponent]") {
+    // Level means span 0.01 (fine, high γ) to 0.70 (fine, low γ): thirds at 0.24 and 0.47 (by hand).
+    ResponseCurve fine;
+    fine.levels = {{0.0, {0.69, 0.71}}, {1.0, {0.50, 0.56, 0.53}}, {2.0, {0.02, 0.60, 0.03, 0.01}}, {3.0, {0.01, 0.01}}};
+    ResponseCurve coarse14, coarse2;
+    coarse14.sf = 1.4, coarse2.sf = 2;
+    coarse14.levels = {{0.5, {0.60, 0.62}}, {1.5, {0.30, 0.35}}, {2.5, {0.02, 0.02}}};  // 0.30-0.35: middle third, not split
+    coarse2.levels = {{1.0, {0.65, 0.66}}, {2.0, {0.20, 0.50, 0.22}}, {3.0, {0.01, 0.02}}};  // 0.20 and 0.22 low, 0.50 high
+    const auto split = split_levels(fine, {coarse14, coarse2});
+    REQUIRE(split.size() == 2);
+    CHECK(split[0].sf == 1);
+    CHECK(split[0].x == 2.0);
+    CHECK(split[0].low == 3);   // 0.02, 0.03, 0.01 ≤ 0.24
+    CHECK(split[0].high == 1);  // 0.60 ≥ 0.47
+    CHECK(split[0].seeds == 4);
+    CHECK(split[1].sf == 2);
+    CHECK(split[1].x == 2.0);
+    CHECK(split[1].low == 2);   // 0.20, 0.22
+    CHECK(split[1].high == 1);  // 0.50
+
+    ShiftSearch search;
+    search.resamples = 50;
+    const auto e = estimate_exponent(fine, {coarse14, coarse2}, search);
+    REQUIRE(e.size() == 3);
+    CHECK(e[0].split_levels == 1);  // S_f 1.4: the fine level only
+    CHECK(e[1].split_levels == 2);  // S_f 2: the fine level and its own
+    CHECK(e[2].split_levels == 2);  // jointly: both
+
+    // Seeds that agree split nothing; nor does a flat response.
+    ResponseCurve steady = fine;
+    steady.levels[2].y = {0.02, 0.03, 0.03, 0.01};
+    coarse2.levels[1].y = {0.30, 0.35, 0.32};
+    CHECK(split_levels(steady, {coarse14, coarse2}).empty());
+    ResponseCurve flat;
+    flat.levels = {{0.0, {0.1, 0.1}}, {1.0, {0.1, 0.1}}};
+    CHECK(split_levels(flat, {}).empty());
+}
