@@ -12,6 +12,8 @@ namespace demscale::stats {
 
 namespace {
 
+double mean_of(const ResponseLevel& l) { return std::accumulate(l.y.begin(), l.y.end(), 0.0) / static_cast<double>(l.y.size()); }
+
 // A curve reduced to its ensemble means, sorted by x, with its interpolant.
 struct MeanCurve {
     double log_sf = 0;
@@ -28,7 +30,7 @@ MeanCurve means_of(const ResponseCurve& c) {
     for (const auto* l : sorted) {
         if (!m.x.empty() && !(l->x > m.x.back())) throw std::invalid_argument("two response levels at the same x");
         m.x.push_back(l->x);
-        m.y.push_back(std::accumulate(l->y.begin(), l->y.end(), 0.0) / static_cast<double>(l->y.size()));
+        m.y.push_back(mean_of(*l));
     }
     if (m.x.size() >= 3) {
         m.steffen.reset(gsl_interp_alloc(gsl_interp_steffen, m.x.size()), gsl_interp_free);
@@ -120,10 +122,7 @@ std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vecto
     double lo = INFINITY, hi = -INFINITY;  // the span of the level means
     for (const auto* c : curves)
         for (const auto& l : c->levels)
-            if (!l.y.empty()) {
-                const double mean = std::accumulate(l.y.begin(), l.y.end(), 0.0) / static_cast<double>(l.y.size());
-                lo = std::min(lo, mean), hi = std::max(hi, mean);
-            }
+            if (!l.y.empty()) lo = std::min(lo, mean_of(l)), hi = std::max(hi, mean_of(l));
     std::vector<SplitLevel> split;
     if (!(hi > lo)) return split;  // no response to split across
     const double third = (hi - lo) / 3;

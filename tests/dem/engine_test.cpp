@@ -470,8 +470,9 @@ TEST_CASE("Results do not depend on the number of threads", "[dem][threads]") {
 }
 
 TEST_CASE("Results do not depend on the number of threads, with walls and without the ledger", "[dem][threads]") {
-    // Without the ledger the pass over the particles hands out chunks as threads come free, so a
-    // particle's thread changes from step to step and run to run: its forces must not.
+    // Without the ledger the pairs are split among the threads by last step's work (which pairs
+    // acted), so a pair's thread changes from step to step; the wall loop is threaded too. A
+    // particle's forces must not change with either.
     Material m;
     m.friction = 0.5;
     Particles p = random_cloud(700, 0.02, 11, 0.5);
