@@ -87,6 +87,9 @@ public:
         // fraction s rounded differently from closest_wall_point's moves the segment point by
         // rounding only, far inside the margin.
         const Vec3 rel = centre - origin_;
+        // Every point of the frustum lies in the slab 0 ≤ z ≤ H: a centre that far below or above
+        // it needs no root (after the lift, the whole pile).
+        if (rel.z() < -bound || rel.z() > frustum_.height + bound) return true;
         const double rho = std::sqrt(rel.x() * rel.x() + rel.y() * rel.y());
         const double s = std::clamp(frustum_.meridian_projection(rho, rel.z()) * inverse_length2_, 0.0, 1.0);
         const double across = rho - (frustum_.bottom_radius + s * (frustum_.top_radius - frustum_.bottom_radius));
