@@ -19,6 +19,7 @@
 #include "dem/contact_geometry.hpp"
 #include "dem/energy_ledger.hpp"
 #include "dem/particles.hpp"
+#include "dem/work_split.hpp"
 
 namespace demscale::dem {
 
@@ -244,19 +245,10 @@ private:
     // 0.09 ms of a 0.2 ms loop, docs/performance.md). Consecutive runs keep each thread's spheres
     // together in memory. With the energy ledger, equal counts: its sums are per thread and must
     // not depend on the engaged flags, which a checkpoint does not carry.
-    static constexpr std::size_t acting_cost = 16;
     void split_work(int parts) {
-        const std::size_t n = pairs_.size();
-        split_.assign(static_cast<std::size_t>(parts) + 1, n);
-        split_[0] = 0;
-        const std::size_t extra = Ledger ? 0 : acting_cost;  // a pair's weight: 1 + extra if it acted
-        const std::size_t total = n + (extra ? extra * static_cast<std::size_t>(std::count(engaged_.begin(), engaged_.end(), 1)) : 0);
-        std::size_t done = 0, k = 0;
-        for (int t = 1; t < parts; ++t) {
-            const std::size_t target = total * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
-            for (; k < n && done < target; ++k) done += 1 + extra * engaged_[k];
-            split_[static_cast<std::size_t>(t)] = k;
-        }
+        const std::size_t extra = Ledger ? 0 : acting_cost;
+        const std::size_t acting = extra ? static_cast<std::size_t>(std::count(engaged_.begin(), engaged_.end(), 1)) : 0;
+        split_by_work(split_, pairs_.size(), parts, extra, acting, [&](std::size_t k) { return std::size_t{engaged_[k]}; });
     }
 
     // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is

@@ -3,6 +3,7 @@
 // particle (a particle's walls in wall order), with the walls' power for the ledger. SI units.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <omp.h>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "dem/energy_ledger.hpp"
 #include "dem/particles.hpp"
 #include "dem/walls.hpp"
+#include "dem/work_split.hpp"
 
 namespace demscale::dem {
 
@@ -53,15 +55,31 @@ public:
         std::optional<Escape> escape;
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
+        // Without the ledger each thread takes a run of spheres of about equal work (each wall
+        // contact a sphere had last step weighs wall_acting_cost: the pour puts the floor's
+        // spheres first, and equal counts left one thread 2.8 times the other's work); with it,
+        // equal counts, as its sums are per thread and must not follow the engaged flags, which a
+        // checkpoint does not carry.
+        const bool threaded = n * static_cast<long>(walls.size()) > parallel_threshold;
+        const int parts = threaded ? omp_get_max_threads() : 1;
+        if (!Ledger && parts > 1) {
+            std::size_t acting = 0;
+            for (const auto& engaged : engaged_) acting += static_cast<std::size_t>(std::count(engaged.begin(), engaged.end(), 1));
+            split_by_work(split_, p.size(), parts, wall_acting_cost, acting, [&](std::size_t i) {
+                std::size_t k = 0;
+                for (const auto& engaged : engaged_) k += engaged[i];
+                return k;
+            });
+        } else {
+            split_by_work(split_, p.size(), 1, 0, 0, [](std::size_t) { return std::size_t{0}; });
+        }
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
-#pragma omp parallel if (n * static_cast<long>(walls.size()) > parallel_threshold) firstprivate(time, dt, reach, n)
+#pragma omp parallel if (threaded) firstprivate(time, dt, reach, n)
         {
             Lost lost;
             double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
-#pragma omp for schedule(static)
-            for (long ii = 0; ii < n; ++ii) {
-                const std::size_t i = static_cast<std::size_t>(ii);
-                if (p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
+            auto add_walls_of = [&](std::size_t i) {
+                if (p.fixed[i]) return;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls.size(); ++w) {
                     std::uint8_t& engaged = engaged_[w][i];
                     auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
@@ -90,6 +108,13 @@ public:
                     p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
                     if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
                 }
+            };
+            if constexpr (Ledger) {
+#pragma omp for schedule(static)
+                for (long i = 0; i < n; ++i) add_walls_of(static_cast<std::size_t>(i));
+            } else {
+                for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads())
+                    for (std::size_t i = split_[part]; i < split_[part + 1]; ++i) add_walls_of(i);
             }
             ledger.add(omp_get_thread_num(), lost, wall_power);
         }
@@ -151,6 +176,7 @@ private:
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
+    std::vector<std::size_t> split_;                  // each thread's run of spheres this step (without the ledger)
 };
 
 }  // namespace demscale::dem
