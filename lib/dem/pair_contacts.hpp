@@ -246,9 +246,7 @@ private:
     // together in memory. With the energy ledger, equal counts: its sums are per thread and must
     // not depend on the engaged flags, which a checkpoint does not carry.
     void split_work(int parts) {
-        const std::size_t extra = Ledger ? 0 : acting_cost;
-        const std::size_t acting = extra ? static_cast<std::size_t>(std::count(engaged_.begin(), engaged_.end(), 1)) : 0;
-        split_by_work(split_, pairs_.size(), parts, extra, acting, [&](std::size_t k) { return std::size_t{engaged_[k]}; });
+        split_by_work(split_, pairs_.size(), parts, Ledger ? 0 : acting_cost, [&](std::size_t k) { return std::size_t{engaged_[k]}; });
     }
 
     // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is

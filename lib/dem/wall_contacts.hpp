@@ -3,7 +3,6 @@
 // particle (a particle's walls in wall order), with the walls' power for the ledger. SI units.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <omp.h>
 #include <optional>
@@ -62,17 +61,11 @@ public:
         // checkpoint does not carry.
         const bool threaded = n * static_cast<long>(walls.size()) > parallel_threshold;
         const int parts = threaded ? omp_get_max_threads() : 1;
-        if (!Ledger && parts > 1) {
-            std::size_t acting = 0;
-            for (const auto& engaged : engaged_) acting += static_cast<std::size_t>(std::count(engaged.begin(), engaged.end(), 1));
-            split_by_work(split_, p.size(), parts, wall_acting_cost, acting, [&](std::size_t i) {
-                std::size_t k = 0;
-                for (const auto& engaged : engaged_) k += engaged[i];
-                return k;
-            });
-        } else {
-            split_by_work(split_, p.size(), 1, 0, 0, [](std::size_t) { return std::size_t{0}; });
-        }
+        split_by_work(split_, p.size(), Ledger ? 1 : parts, wall_acting_cost, [&](std::size_t i) {
+            std::size_t k = 0;
+            for (const auto& engaged : engaged_) k += engaged[i];
+            return k;
+        });
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
 #pragma omp parallel if (threaded) firstprivate(time, dt, reach, n)
         {

@@ -17,19 +17,20 @@ inline constexpr std::size_t acting_cost = 16;      // per acting pair
 inline constexpr std::size_t wall_acting_cost = 8;  // per acting wall contact of a sphere
 
 // split (resized to parts + 1): run t is [split[t], split[t + 1]) of the n items, the runs of
-// about equal weight. acting(k): how many of item k's contacts acted (0 for none); acting_total:
-// their sum over all items; extra: what an acting contact adds to its item's weight (0: equal
-// counts).
+// about equal weight. acting(k): how many of item k's contacts acted (0 for none), read only when
+// extra > 0; extra: what an acting contact adds to its item's weight (0: equal counts).
 template <class Acting>
-void split_by_work(std::vector<std::size_t>& split, std::size_t n, int parts, std::size_t extra, std::size_t acting_total,
-                   Acting acting) {
+void split_by_work(std::vector<std::size_t>& split, std::size_t n, int parts, std::size_t extra, Acting acting) {
     split.assign(static_cast<std::size_t>(parts) + 1, n);
     split[0] = 0;
-    const std::size_t total = n + extra * acting_total;
+    if (parts < 2) return;
+    std::size_t total = n;
+    if (extra > 0)
+        for (std::size_t k = 0; k < n; ++k) total += extra * acting(k);
     std::size_t done = 0, k = 0;
     for (int t = 1; t < parts; ++t) {
         const std::size_t target = total * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
-        for (; k < n && done < target; ++k) done += 1 + extra * acting(k);
+        for (; k < n && done < target; ++k) done += 1 + (extra > 0 ? extra * acting(k) : 0);
         split[static_cast<std::size_t>(t)] = k;
     }
 }
