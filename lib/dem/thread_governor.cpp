@@ -38,8 +38,11 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
         current_ = one < one_thread_margin * many ? 1 : most_;
         // On one thread, look again soon, then ever less often while one thread keeps winning:
         // a noisy window that chose one thread on a quiet machine costs a few windows, not
-        // probe_every; lasting contention costs a probe window in ever more.
-        hold_ = current_ == most_ ? probe_every : (all ? 2 : std::min(2 * hold_, probe_every));
+        // probe_every; lasting contention costs a probe window in ever more. On all threads,
+        // ever less often too while they keep winning (up to longest_hold): each probe runs a
+        // window on one thread, and contention that starts later shows as a window 1.5x slower.
+        if (current_ == most_) hold_ = all ? std::min(2 * hold_, longest_hold) : probe_every;
+        else hold_ = all ? 2 : std::min(2 * hold_, probe_every);
         stage_ = Stage::settled, settled_windows_ = 0, last_settled_ = 0;
         return;
     }

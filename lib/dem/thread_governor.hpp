@@ -1,15 +1,17 @@
 // Choosing, window by window, between all the threads a run was given and one. On a machine where
 // another job holds a core, threads that wait for each other at every step's barriers can run many
 // times slower than one thread (docs/performance.md: 23 s quiet, 182 s with one core busy). The
-// governor times windows of steps (at least 0.2 s and 20 steps) in the mode it chose, and every
-// `probe_every` windows, or at once when a window runs 1.5 times slower than the last, times one
-// window in the other mode, then one more in its own, and keeps one thread only when it was 15 %
-// faster than all threads (probe against the mean of the windows around it: a cost that drifts
-// over a run cancels). Having chosen one thread it probes again after 2 windows, then 4, 8, …
-// up to `probe_every` while one thread keeps winning: on a shared machine a window's noise can
-// pass for contention, and a wrong choice then costs a few windows.
-// It starts settled on all threads and probes after its first window. Trajectories do not depend on the thread count
-// (simulation.hpp), so the choice changes only the speed.
+// governor times windows of steps (at least 0.2 s and 20 steps) in the mode it chose, and now and
+// then, or at once when a window runs 1.5 times slower than the last, times one window in the
+// other mode, then one more in its own, and keeps one thread only when it was 15 % faster than
+// all threads (probe against the mean of the windows around it: a cost that drifts over a run
+// cancels). It starts on all threads and probes after its first window.
+// How often: having chosen one thread it probes again after 2 windows, then 4, 8, … up to
+// `probe_every` while one thread keeps winning (on a shared machine a window's noise can pass for
+// contention, and a wrong choice then costs a few windows); on all threads after 12 windows, then
+// 24, 48, … up to `longest_hold` while all threads keep winning (each probe runs a window on one
+// thread: 7 of 89 windows of a quiet 2-core run did, docs/performance.md).
+// Trajectories do not depend on the thread count (simulation.hpp), so the choice changes only the speed.
 #pragma once
 
 #include <chrono>
@@ -19,7 +21,8 @@ namespace demscale::dem {
 
 class ThreadGovernor {
 public:
-    static constexpr int probe_every = 24;
+    static constexpr int probe_every = 24;   // windows between probes, on one thread at most
+    static constexpr int longest_hold = 96;  // on all threads at most
     static constexpr double one_thread_margin = 0.85;  // one thread's time over all threads' to choose it
 
     // threads: what the run was given; 1 turns the governor off.
@@ -42,8 +45,8 @@ private:
     std::chrono::steady_clock::time_point window_start_;
     std::size_t window_steps_ = 0;
     std::size_t windows_[2] = {0, 0};  // [0] one thread, [1] all
-    int settled_windows_ = probe_every - 1;  // since the last probe: the first window probes
-    int hold_ = probe_every;                 // windows between probes now
+    int hold_ = probe_every / 2;         // windows between probes now
+    int settled_windows_ = hold_ - 1;  // since the last probe: the first window probes
     double last_settled_ = 0, before_ = 0, probe_ = 0;  // s per step
 };
 
