@@ -7,6 +7,23 @@
 
 namespace demscale::dem {
 
+namespace {
+// Items 0 … key.size()-1 in ascending key order, equal keys in item order (a counting sort):
+// bucket b's items are order[start[b]] … order[start[b + 1] - 1].
+struct Buckets {
+    std::vector<std::uint32_t> start, order;
+};
+template <class Key>
+Buckets bucket_by(const std::vector<Key>& key, std::size_t buckets) {
+    Buckets out{std::vector<std::uint32_t>(buckets + 1, 0), std::vector<std::uint32_t>(key.size())};
+    for (const Key b : key) ++out.start[b + 1];
+    for (std::size_t b = 0; b < buckets; ++b) out.start[b + 1] += out.start[b];
+    std::vector<std::uint32_t> fill(out.start.begin(), out.start.end() - 1);
+    for (std::size_t i = 0; i < key.size(); ++i) out.order[fill[key[i]]++] = static_cast<std::uint32_t>(i);
+    return out;
+}
+}  // namespace
+
 void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* rank) {
     pairs_.clear();
     built_at_ = p.position;
@@ -23,18 +40,13 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
         throw std::runtime_error("neighbour grid too large: particles spread over " + std::to_string(dims[0]) + " x " +
                                  std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " cells");
     auto cell_of = [&](const Vec3& x, int k) { return std::min(dims[k] - 1, static_cast<long>((x[k] - lo[k]) / cell)); };
-    // Counting sort of particles into cells.
-    const std::size_t cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
-    std::vector<std::uint32_t> start(cells + 1, 0), order(n);
+    // The particles sorted into cells.
     std::vector<std::size_t> index(n);
     for (std::size_t i = 0; i < n; ++i) {
         const auto& x = p.position[i];
         index[i] = static_cast<std::size_t>((cell_of(x, 2) * dims[1] + cell_of(x, 1)) * dims[0] + cell_of(x, 0));
-        ++start[index[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) order[fill[index[i]]++] = static_cast<std::uint32_t>(i);
+    const auto [start, order] = bucket_by(index, static_cast<std::size_t>(dims[0] * dims[1] * dims[2]));
 
     // Each pair once: sphere i takes the spheres after it in its own cell and every sphere in the
     // 13 cells "after" its cell (half of the 26 around it), so no pair is tested twice; the sort
@@ -73,15 +85,15 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
 #pragma omp critical
         pairs_.insert(pairs_.end(), local.begin(), local.end());
     }
-    // Ascending (i, j), a fixed order whatever the thread count: bucketed by i (a counting sort),
-    // then each sphere's few j sorted (a comparison sort of the whole list cost a fifth of the build).
-    std::vector<std::uint32_t> first(n + 1, 0);
-    for (const auto& q : pairs_) ++first[q.first + 1];
-    for (std::size_t i = 0; i < n; ++i) first[i + 1] += first[i];
+    // Ascending (i, j), a fixed order whatever the thread count: bucketed by i, then each sphere's
+    // few j sorted (a comparison sort of the whole list took a quarter of the build).
+    std::vector<std::uint32_t> first_of(pairs_.size());
+    for (std::size_t k = 0; k < pairs_.size(); ++k) first_of[k] = pairs_[k].first;
+    const Buckets by_first = bucket_by(first_of, n);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted(pairs_.size());
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for (const auto& q : pairs_) sorted[next[q.first]++] = q;
-    for (std::size_t i = 0; i < n; ++i) std::sort(sorted.begin() + first[i], sorted.begin() + first[i + 1]);
+    for (std::size_t k = 0; k < sorted.size(); ++k) sorted[k] = pairs_[by_first.order[k]];
+    for (std::size_t i = 0; i < n; ++i)
+        std::sort(sorted.begin() + by_first.start[i], sorted.begin() + by_first.start[i + 1]);
     pairs_.swap(sorted);
 }
 
