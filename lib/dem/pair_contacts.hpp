@@ -1,8 +1,9 @@
 // The particle pairs of the engine: the listed pairs in (i, j) order with their contact history,
 // the merge of that history into each new neighbour list, and the forces of a step, gathered so
 // that every particle sums its pairs in ascending pair order whatever the thread count.
-// Threads (OpenMP): pair results go into a per-pair buffer, then each particle gathers its own;
-// on one thread each pair adds to its particles at once, in the same order: the same bits. SI.
+// Threads (OpenMP): each thread takes the pairs of a slab of space and adds their forces at once to
+// the spheres only it touches; the spheres on a slab's face gather theirs from a per-pair buffer
+// (pair_shares.hpp). SI.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
 #include "dem/energy_ledger.hpp"
+#include "dem/pair_shares.hpp"
 #include "dem/particles.hpp"
 #include "dem/work_split.hpp"
 
@@ -70,56 +72,55 @@ public:
     }
 
     // Adds this step's pair forces and torques to the particles (which hold gravity already); the
-    // ledger gets what each thread's pairs dissipated.
+    // ledger gets what each thread's pairs dissipated. Each thread evaluates its share of the pairs
+    // (pair_shares.hpp) in pair order and adds to the spheres only it touches at once; after a
+    // barrier, the spheres on a share's face gather their pairs' results from the buffer (a pair
+    // that does not act holds a zero result there, listed_result: adding ±0 to a sum that starts at
+    // +0 or non-zero leaves it as it was, so the gather needs no branch). Every sphere sums its
+    // pairs in ascending pair order, after gravity: the same bits on any number of threads.
     void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger) {
         const double reach = law.range();
-        const long n_pairs = static_cast<long>(pairs_.size()), n = static_cast<long>(p.size());
-        if (n_pairs <= parallel_threshold || omp_get_max_threads() == 1) {
-            // One thread: each pair that acts adds to its two particles at once. Every particle still
-            // sums its pairs in ascending pair order, after gravity: the same bits as the gather
-            // below (which also adds the zero torques of central forces; sums that start at +0 or
-            // a non-zero value are unchanged by adding ±0).
-            Lost lost;
-            for (std::size_t k = 0; k < pairs_.size(); ++k) {
-                PairResult r;
-                const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
-                if (acts == Acts::nothing) continue;
-                const PairIndex q = pairs_[k];
-                p.force[q.i] += r.force_i, p.force[q.j] -= r.force_i;
-                if (acts == Acts::contact) p.torque[q.i] += r.torque_i, p.torque[q.j] += r.torque_j;
-            }
-            ledger.add(0, lost);
-            return;
-        }
-        // Threads: the results of the pairs that act into a buffer, each thread a run of pairs of
-        // about equal work, then each particle gathers its own (no races). A pair that does not
-        // act holds a zero result (listed_result), so the gather adds every listed pair without a
-        // branch: adding ±0 to a sum that starts at +0 or non-zero leaves it as it was, the same
-        // bits as on one thread (a branch on the engaged flag cost a third of the gather's samples).
-        const int parts = omp_get_max_threads();
-        if (split_.size() != static_cast<std::size_t>(parts) + 1) split_work(parts);
-#pragma omp parallel num_threads(parts)
+        const int parts = static_cast<long>(pairs_.size()) <= parallel_threshold ? 1 : std::min(omp_get_max_threads(), PairShares::most_threads);
+        if (shares_.runs.size() != static_cast<std::size_t>(parts)) share_work(p, parts);
+#pragma omp parallel num_threads(parts) if (parts > 1)
         {
             Lost lost;
             for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads())
-                for (std::size_t k = split_[part]; k < split_[part + 1]; ++k) {
-                    PairResult r;
-                    if (listed_result(p, law, dt, k, reach, lost, r) != Acts::nothing) results_[k] = r;
-                }
+                for (const auto& [first, end] : shares_.runs[part])
+                    for (std::size_t k = first; k < end; ++k) {
+                        PairResult r;
+                        const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
+                        if (acts == Acts::nothing) continue;
+                        const PairIndex q = pairs_[k];
+                        const std::uint8_t direct = shares_.direct[k];
+                        if (direct & 1) {
+                            p.force[q.i] += r.force_i;
+                            if (acts == Acts::contact) p.torque[q.i] += r.torque_i;
+                        }
+                        if (direct & 2) {
+                            p.force[q.j] -= r.force_i;
+                            if (acts == Acts::contact) p.torque[q.j] += r.torque_j;
+                        }
+                        if (direct != PairShares::both_direct) results_[k] = r;
+                    }
             ledger.add(omp_get_thread_num(), lost);
-        }
-#pragma omp parallel for schedule(static) if (n > parallel_threshold)
-        for (long ii = 0; ii < n; ++ii) {
-            const std::size_t i = static_cast<std::size_t>(ii);
-            Vec3 f = p.force[i], t = p.torque[i];
-            for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
-                const PairResult& r = results_[incidence_[e] / 2];
-                const bool is_j = incidence_[e] % 2;
-                f += (is_j ? -1.0 : 1.0) * r.force_i;  // x + (-1·y) is x − y, bit for bit
-                t += is_j ? r.torque_j : r.torque_i;
+            if (!shares_.gathering.empty()) {
+#pragma omp barrier
+                const long faces = static_cast<long>(shares_.gathering.size());
+#pragma omp for schedule(static)
+                for (long g = 0; g < faces; ++g) {
+                    const std::size_t i = shares_.gathering[static_cast<std::size_t>(g)];
+                    Vec3 f = p.force[i], t = p.torque[i];
+                    for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                        const PairResult& r = results_[incidence_[e] / 2];
+                        const bool is_j = incidence_[e] % 2;
+                        f += (is_j ? -1.0 : 1.0) * r.force_i;  // x + (-1·y) is x − y, bit for bit
+                        t += is_j ? r.torque_j : r.torque_i;
+                    }
+                    p.force[i] = f;
+                    p.torque[i] = t;
+                }
             }
-            p.force[i] = f;
-            p.torque[i] = t;
         }
     }
 
@@ -201,8 +202,7 @@ private:
             incidence_[fill[pairs_[k].i]++] = 2 * k;
             incidence_[fill[pairs_[k].j]++] = 2 * k + 1;
         }
-        results_.assign(pairs_.size(), PairResult{});  // zero where a pair does not act (listed_result)
-        split_.clear();                   // the runs follow the list
+        shares_ = {};  // drawn again for the new list (share_work)
         shapes_.resize(pairs_.size());
         for (std::size_t k = 0; k < pairs_.size(); ++k) shapes_[k] = pair_shape(p, pairs_[k].i, pairs_[k].j);
     }
@@ -241,16 +241,27 @@ private:
         return Acts::contact;
     }
 
-    // split_: `parts` runs of consecutive pairs (run t = [split_[t], split_[t + 1])) of about equal
-    // work, taking a pair that acted last step as acting_cost pairs passed over (a pile's bottom
-    // pairs press, its flying top's are apart: equal counts of pairs left one thread waiting at
-    // 0.09 ms of a 0.2 ms loop, docs/performance.md). Consecutive runs keep each thread's spheres
-    // together in memory. With the energy ledger, equal counts: its sums are per thread and must
-    // not depend on the engaged flags, which a checkpoint does not carry. Drawn when the list
-    // changes (or the thread count does), not every step: a pass over every pair on one thread
-    // took 5 % of the 2-thread run's time, and the acting pairs change little between rebuilds.
-    void split_work(int parts) {
-        split_by_work(split_, pairs_.size(), parts, Ledger ? 0 : acting_cost, [&](std::size_t k) { return std::size_t{engaged_[k]}; });
+    // Which thread takes which pairs (pair_shares.hpp), drawn when the list changes (or the thread
+    // count does), not every step: the acting pairs change little between rebuilds. Without the
+    // ledger, slabs of about equal work, a pair that acted last step weighing acting_cost pairs
+    // passed over (a pile's bottom pairs press, its flying top's are apart: equal counts of pairs
+    // left one thread waiting at 0.09 ms of a 0.2 ms loop, docs/performance.md). With the ledger,
+    // runs of equal counts of consecutive pairs: its sums are per thread and must not depend on
+    // the positions at the draw or the engaged flags, which a checkpoint does not carry.
+    void share_work(const Particles& p, int parts) {
+        if constexpr (Ledger) {
+            std::vector<std::size_t> split;
+            split_by_work(split, pairs_.size(), parts, 0, [](std::size_t) { return std::size_t{0}; });
+            std::size_t part = 0;
+            shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) {
+                while (k >= split[part + 1]) ++part;
+                return part;
+            });
+        } else {
+            const auto owner = slab_owner(pairs_, p, parts, [&](std::size_t k) { return 1 + acting_cost * engaged_[k]; });
+            shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) { return owner[k]; });
+        }
+        results_.assign(pairs_.size(), PairResult{});  // the spheres that gather changed: zero where a pair does not act
     }
 
     // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is
@@ -279,7 +290,7 @@ private:
     std::vector<std::uint8_t> engaged_;
     std::vector<PairShape> shapes_;
     std::vector<PairResult> results_;
-    std::vector<std::size_t> split_;  // each thread's run of pairs this step (split_work)
+    PairShares shares_;  // which thread takes which pairs (share_work)
     std::vector<std::uint32_t> incidence_start_, incidence_;
 };
 

@@ -65,7 +65,7 @@ public:
         if (!std::isfinite(probe))
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
-        if (neighbors_.needs_rebuild(p_)) rebuild();
+        if (sort_due() || neighbors_.needs_rebuild(p_)) rebuild();
         compute_forces();
         half_kick();
         time_ += dt_;
@@ -176,7 +176,7 @@ public:
     }
 
 private:
-    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-7";
+    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-8";
 
     // Sets the governor's thread count for one step and restores the caller's after it (also when
     // the step throws), then reports the step's end to the governor.
@@ -213,18 +213,25 @@ private:
         }
     }
 
+    // A reorder is due at the first build and every sort_.every_steps steps after it, at those
+    // steps exactly (a rebuild is forced then): the order, hence each sphere's pair order, is then
+    // the same whatever the skin, which only decides when the list is rebuilt in between.
+    bool sort_due() const {
+        return p_.size() > 1 && p_.size() >= sort_.min_particles && (sorts_ == 0 || steps_ - sorted_at_ >= sort_.every_steps);
+    }
+
     void rebuild() {
-        if (p_.size() > 1 && p_.size() >= sort_.min_particles && (sorts_ == 0 || steps_ - sorted_at_ >= sort_.every_steps))
-            reorder_spatially();
+        if (sort_due()) reorder_spatially();
         neighbors_.build(p_, &input_index_);  // pairs oriented by input order: a reorder flips none
         pair_contacts_.merge(neighbors_.pairs(), p_, law_);
     }
 
-    // The spheres cell by cell through cells of the neighbour grid's size, each with its state, wall
-    // contacts and pairs (renumbered; the next merge indexes them).
+    // The spheres cell by cell through cells of the largest diameter (about the neighbour grid's,
+    // without the skin, which must not change the order), each with its state, wall contacts and
+    // pairs (renumbered; the next merge indexes them).
     void reorder_spatially() {
         const double r_max = *std::max_element(p_.radius.begin(), p_.radius.end());
-        const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max + neighbors_.cutoff_gap());
+        const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max);
         ++sorts_, sorted_at_ = steps_;
         std::vector<std::uint32_t> new_index(order.size()), input(order.size());
         for (std::uint32_t k = 0; k < order.size(); ++k) new_index[order[k]] = k, input[k] = input_index_[order[k]];

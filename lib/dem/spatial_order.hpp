@@ -15,10 +15,13 @@
 namespace demscale::dem {
 
 // When the engine reorders its spheres: once it holds at least min_particles, at its first
-// neighbour-list build and then at the first build after every `every_steps` steps. Below
-// min_particles (about what the caches hold) the spheres keep the order they were given.
+// neighbour-list build and then every `every_steps` steps (with a build forced then). Every scene
+// whose pair loop runs on threads by default: a scene that fits the caches gains little on one
+// thread, but threads that take slabs of space (pair_shares.hpp) write the forces of spheres near
+// in memory only when these are near in space; in the order a pour left them, two threads wrote
+// into the same cache lines and ran 1.2 times slower than with a shared buffer (docs/performance.md).
 struct SpatialSort {
-    std::size_t min_particles = 16384;
+    std::size_t min_particles = 512;
     std::size_t every_steps = 1000;
 };
 
