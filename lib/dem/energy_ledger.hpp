@@ -1,6 +1,6 @@
 // The engine's energy ledger: what the contact laws dissipate and what the walls' motion does to
-// the particles, summed per thread in a step and then in thread order (deterministic for a given
-// thread count, no per-pair storage). Off (Ledger = false), it books nothing and costs nothing. SI.
+// the particles, summed per share of the work in a step and then in share order (deterministic for
+// a given count of shares, whichever threads run them; no per-pair storage). Off (Ledger = false), it books nothing and costs nothing. SI.
 #pragma once
 
 #include <cmath>
@@ -19,22 +19,22 @@ class EnergyLedger {
 public:
     using Lost = std::conditional_t<Ledger, Dissipation, NoDissipation>;  // what the laws book into
 
-    struct alignas(64) Share {  // one thread's share of a step (own cache line)
+    struct alignas(64) Share {  // one share's part of a step (own cache line: threads write them)
         Dissipation lost;
         double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
     };
 
-    void begin_step(int threads) {
-        if constexpr (Ledger) shares_.assign(static_cast<std::size_t>(threads), Share{});
+    void begin_step(int shares) {
+        if constexpr (Ledger) shares_.assign(static_cast<std::size_t>(shares), Share{});
     }
-    // What a thread booked in this step (Ledger only).
-    void add(int thread, const Lost& lost, double wall_power = 0) {
+    // What share `share` booked in this step (Ledger only).
+    void add(int share, const Lost& lost, double wall_power = 0) {
         if constexpr (Ledger) {
-            auto& mine = shares_[static_cast<std::size_t>(thread)];
+            auto& mine = shares_[static_cast<std::size_t>(share)];
             mine.lost += lost, mine.wall_power += wall_power;
         }
     }
-    // The step's shares into the totals, in thread order.
+    // The step's shares into the totals, in share order.
     void end_step(double dt) {
         if constexpr (Ledger)
             for (const Share& t : shares_) dissipated_ += t.lost, wall_work_ += t.wall_power * dt;

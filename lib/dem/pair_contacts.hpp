@@ -72,20 +72,23 @@ public:
     }
 
     // Adds this step's pair forces and torques to the particles (which hold gravity already); the
-    // ledger gets what each thread's pairs dissipated. Each thread evaluates its share of the pairs
+    // ledger gets what each share's pairs dissipated. The pairs are cut into one share per thread the
+    // run was given (`given`), whatever number of threads runs this step (one thread may run them
+    // all when the governor chose it, thread_governor.hpp): the ledger's sums, per share, stay the
+    // same bits. Each thread evaluates its shares of the pairs
     // (pair_shares.hpp) in pair order and adds to the spheres only it touches at once; after a
     // barrier, the spheres on a share's face gather their pairs' results from the buffer (a pair
     // that does not act holds a zero result there, listed_result: adding ±0 to a sum that starts at
     // +0 or non-zero leaves it as it was, so the gather needs no branch). Every sphere sums its
     // pairs in ascending pair order, after gravity: the same bits on any number of threads.
-    void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger) {
+    void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger, int given) {
         const double reach = law.range();
-        const int parts = static_cast<long>(pairs_.size()) <= parallel_threshold ? 1 : std::min(omp_get_max_threads(), PairShares::most_threads);
+        const int parts = static_cast<long>(pairs_.size()) <= parallel_threshold ? 1 : std::min(given, PairShares::most_threads);
         if (shares_.runs.size() != static_cast<std::size_t>(parts)) share_work(p, parts);
-#pragma omp parallel num_threads(parts) if (parts > 1)
+#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads()))
         {
-            Lost lost;
-            for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads())
+            for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
+                Lost lost;
                 for (const auto& [first, end] : shares_.runs[part])
                     for (std::size_t k = first; k < end; ++k) {
                         PairResult r;
@@ -103,7 +106,8 @@ public:
                         }
                         if (direct != PairShares::both_direct) results_[k] = r;
                     }
-            ledger.add(omp_get_thread_num(), lost);
+                ledger.add(part, lost);
+            }
             if (!shares_.gathering.empty()) {
 #pragma omp barrier
                 const long faces = static_cast<long>(shares_.gathering.size());
@@ -246,7 +250,7 @@ private:
     // ledger, slabs of about equal work, a pair that acted last step weighing acting_cost pairs
     // passed over (a pile's bottom pairs press, its flying top's are apart: equal counts of pairs
     // left one thread waiting at 0.09 ms of a 0.2 ms loop, docs/performance.md). With the ledger,
-    // runs of equal counts of consecutive pairs: its sums are per thread and must not depend on
+    // runs of equal counts of consecutive pairs: its sums are per share and must not depend on
     // the positions at the draw or the engaged flags, which a checkpoint does not carry.
     void share_work(const Particles& p, int parts) {
         if constexpr (Ledger) {

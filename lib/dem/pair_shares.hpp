@@ -20,7 +20,7 @@ namespace demscale::dem {
 
 struct PairShares {
     using Run = std::pair<std::size_t, std::size_t>;  // pairs [first, second)
-    std::vector<std::vector<Run>> runs;                // per thread, ascending
+    std::vector<std::vector<Run>> runs;                // per share (thread), ascending
     std::vector<std::uint8_t> direct;                  // per pair: bit 0 adds to i at once, bit 1 to j
     std::vector<std::uint32_t> gathering;              // spheres with pairs of two threads
     static constexpr std::uint8_t both_direct = 3;
@@ -33,7 +33,7 @@ template <class Pairs, class Owner>
 PairShares shares_of(const Pairs& pairs, std::size_t n, int parts, Owner owner) {
     PairShares s;
     s.runs.assign(static_cast<std::size_t>(parts), {});
-    s.direct.assign(pairs.size(), PairShares::both_direct);
+    s.direct.resize(pairs.size());
     constexpr std::uint8_t none = 0xFF, mixed = 0xFE;  // a sphere's thread: none yet, or two
     std::vector<std::uint8_t> thread_of(n, none);
     for (std::size_t k = 0; k < pairs.size(); ++k) {

@@ -3,8 +3,8 @@
 // that stop a run at the first non-finite number. The parts own their state: PairContacts (pairs,
 // their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
 // functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). Trajectories are
-// bit-identical for any thread count (the energy ledger's sums, per thread, only for the same
-// thread count). A large scene's spheres are reordered cell by cell now and then
+// bit-identical for any thread count (the energy ledger's sums, per share of the work, for any
+// thread count that runs the steps of a run given the same threads). A large scene's spheres are reordered cell by cell now and then
 // (spatial_order.hpp): particles() is then in that order, input_index() names each sphere's place
 // in the input, and in_input_order() gives the state as it was ordered. SI units.
 #pragma once
@@ -73,6 +73,9 @@ public:
     }
 
     const ThreadGovernor& governor() const { return governor_; }
+    // Stops the governor: each step then runs on the threads OpenMP is set to (tests that switch
+    // the count by hand); the work stays cut into the shares of the threads the run was given.
+    void stop_governing() { governor_ = ThreadGovernor(1); }
 
     // The spheres in the engine's order (input_index() maps it to the input's).
     const Particles& particles() const { return p_; }
@@ -243,12 +246,12 @@ private:
     }
 
     void compute_forces() {
-        ledger_.begin_step(omp_get_max_threads());
+        ledger_.begin_step(given_threads_);
         const long n = static_cast<long>(p_.size());
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long i = 0; i < n; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
-        pair_contacts_.add_forces(p_, law_, dt_, ledger_);
-        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_))
+        pair_contacts_.add_forces(p_, law_, dt_, ledger_, given_threads_);
+        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_))
             throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
                                      std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);
@@ -291,8 +294,11 @@ private:
     SpatialSort sort_;
     std::vector<std::uint32_t> input_index_;  // each sphere's place in the input
     std::size_t sorts_ = 0, sorted_at_ = 0;   // reorders so far; the step of the last
-    // The ledger sums per thread: a run that books it keeps one thread count (bit-identical ledger).
-    ThreadGovernor governor_{Ledger ? 1 : omp_get_max_threads()};
+    // The threads the run was given (OpenMP's count at construction): the contact loops cut their
+    // work into this many shares whatever number of threads the governor runs a step on, so the
+    // ledger's sums, per share, are the same bits on one thread or all of them.
+    int given_threads_ = omp_get_max_threads();
+    ThreadGovernor governor_{given_threads_};
 };
 
 }  // namespace demscale::dem

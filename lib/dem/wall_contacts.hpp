@@ -3,6 +3,7 @@
 // particle (a particle's walls in wall order), with the walls' power for the ledger. SI units.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <omp.h>
 #include <optional>
@@ -44,35 +45,34 @@ public:
         std::size_t particle, wall;
     };
 
-    // Adds this step's wall forces and torques to the particles; the ledger gets each thread's
-    // losses and the walls' power. Returns a particle that has left the domain through a wall (the
-    // caller stops the run).
+    // Adds this step's wall forces and torques to the particles; the ledger gets each share's
+    // losses and the walls' power. The spheres are cut into one run per thread the run was given
+    // (`given`), whatever number of threads runs this step (the ledger's sums, per share, stay the
+    // same bits). Returns a particle that has left the domain through a wall (the caller stops the run).
     std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
-                                     EnergyLedger<Ledger>& ledger) {
+                                     EnergyLedger<Ledger>& ledger, int given) {
         const double reach = law.range();
         const long n = static_cast<long>(p.size());
         std::optional<Escape> escape;
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
-        // Without the ledger each thread takes a run of spheres of about equal work (each wall
-        // contact a sphere had last step weighs wall_acting_cost: the pour puts the floor's
-        // spheres first, and equal counts left one thread 2.8 times the other's work); with it,
-        // equal counts, as its sums are per thread and must not follow the engaged flags, which a
-        // checkpoint does not carry.
-        const bool threaded = n * static_cast<long>(walls.size()) > parallel_threshold;
-        const int parts = threaded ? omp_get_max_threads() : 1;
-        split_by_work(split_, p.size(), Ledger ? 1 : parts, wall_acting_cost, [&](std::size_t i) {
+        // Without the ledger the runs carry about equal work (each wall contact a sphere had last
+        // step weighs wall_acting_cost: the pour puts the floor's spheres first, and equal counts
+        // left one thread 2.8 times the other's work); with it, equal counts, as its sums are per
+        // share and must not follow the engaged flags, which a checkpoint does not carry.
+        const int parts = n * static_cast<long>(walls.size()) > parallel_threshold ? given : 1;
+        split_by_work(split_, p.size(), parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t i) {
             std::size_t k = 0;
             for (const auto& engaged : engaged_) k += engaged[i];
             return k;
         });
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
-#pragma omp parallel if (threaded) firstprivate(time, dt, reach, n)
-        {
+#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, n)
+        for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
             Lost lost;
             double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
-            auto add_walls_of = [&](std::size_t i) {
-                if (p.fixed[i]) return;  // a fixed grain may sit in a wall (a floor's half-buried grains)
+            for (std::size_t i = split_[part]; i < split_[part + 1]; ++i) {
+                if (p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls.size(); ++w) {
                     std::uint8_t& engaged = engaged_[w][i];
                     auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
@@ -101,15 +101,8 @@ public:
                     p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
                     if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
                 }
-            };
-            if constexpr (Ledger) {
-#pragma omp for schedule(static)
-                for (long i = 0; i < n; ++i) add_walls_of(static_cast<std::size_t>(i));
-            } else {
-                for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads())
-                    for (std::size_t i = split_[part]; i < split_[part + 1]; ++i) add_walls_of(i);
             }
-            ledger.add(omp_get_thread_num(), lost, wall_power);
+            ledger.add(part, lost, wall_power);
         }
         return escape;
     }
@@ -169,7 +162,7 @@ private:
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
-    std::vector<std::size_t> split_;                  // each thread's run of spheres this step (without the ledger)
+    std::vector<std::size_t> split_;                  // each share's run of spheres this step
 };
 
 }  // namespace demscale::dem

@@ -7,6 +7,8 @@
 #include <random>
 #include <sstream>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "bridge/mikami.hpp"
 #include "bridge/young_laplace.hpp"
@@ -477,10 +479,11 @@ TEST_CASE("Results do not depend on the number of threads", "[dem][threads]") {
 }
 
 TEST_CASE("Results do not depend on the thread count changing between steps, wet, with walls", "[dem][threads]") {
-    // The thread governor switches between one thread and all of them between steps. On threads
-    // the spheres on a slab's face gather their pairs' results from a buffer, on one thread every
-    // result is added at once: a pair that stopped acting during one-thread steps must not bring
-    // back its last threaded result. Bridges (central pulls across a gap) form, stretch and rupture here.
+    // The thread governor switches between one thread and all of them between steps; the work
+    // stays cut into the shares of the threads the run was given. On two shares the spheres on a
+    // slab's face gather their pairs' results from a buffer, on one share every result is added at
+    // once: a pair that stopped acting while one thread ran both shares must not bring back a stale
+    // result. Bridges (central pulls across a gap) form, stretch and rupture here.
     Material m;
     m.friction = 0.5;
     Particles p = random_cloud(700, 0.02, 17, 0.5);
@@ -489,19 +492,33 @@ TEST_CASE("Results do not depend on the thread count changing between steps, wet
     using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
     const auto k = bridge::mikami_coefficients(0.05, ContactAngle{Degrees{20}});
     const Wet law(m, CohesionLiquidBridge{k, 1e-3, 0.074, std::nullopt});
-    auto run = [&](bool switching) {
-        omp_set_num_threads(1);  // the governor off: the count set below holds for each step
-        Simulation<Wet, false> sim(p, law, walls, Vec3(0, 0, -9.81), 2e-6, 0.5e-3);
+    auto run = [&](auto ledger, int given, bool switching) {
+        omp_set_num_threads(given);
+        Simulation<Wet, decltype(ledger)::value> sim(p, law, walls, Vec3(0, 0, -9.81), 2e-6, 0.5e-3);
+        sim.stop_governing();  // the count set below holds for each step
         for (int n = 0; n < 1500; ++n) {
-            omp_set_num_threads(switching && (n / 37) % 2 == 0 ? 2 : 1);
+            omp_set_num_threads(switching && (n / 37) % 2 == 0 ? 1 : given);
             sim.step();
         }
-        return sim.particles();
+        return std::pair(sim.particles(), sim.energy());
     };
-    const Particles one = run(false), switching = run(true);
+    using Off = std::false_type;
+    const Particles one = run(Off{}, 1, false).first, switching = run(Off{}, 2, true).first;
     omp_set_num_threads(omp_get_num_procs());
     CHECK(std::memcmp(one.position.data(), switching.position.data(), one.size() * sizeof(Vec3)) == 0);
     CHECK(std::memcmp(one.angular_velocity.data(), switching.angular_velocity.data(), one.size() * sizeof(Vec3)) == 0);
+
+    // The energy ledger sums per share, in share order: the same bits whichever threads ran the
+    // shares (a sum per thread would add both shares' losses into one on the one-thread steps).
+    using On = std::true_type;
+    const auto [steady, booked] = run(On{}, 2, false);
+    const auto [switched, booked_switching] = run(On{}, 2, true);
+    omp_set_num_threads(omp_get_num_procs());
+    REQUIRE(booked.dissipated.total() > 0);
+    CHECK(std::memcmp(steady.position.data(), one.position.data(), one.size() * sizeof(Vec3)) == 0);
+    CHECK(std::memcmp(steady.position.data(), switched.position.data(), one.size() * sizeof(Vec3)) == 0);
+    CHECK(std::memcmp(&booked.dissipated, &booked_switching.dissipated, sizeof(booked.dissipated)) == 0);
+    CHECK(booked.wall_work == booked_switching.wall_work);
 }
 
 TEST_CASE("Results do not depend on the number of threads, with walls and without the ledger", "[dem][threads]") {
