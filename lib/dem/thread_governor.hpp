@@ -11,7 +11,8 @@
 // contention, and a wrong choice then costs a few windows); on all threads after 12 windows, then
 // 24, 48, … up to `longest_hold` while all threads keep winning (each probe runs a window on one
 // thread: 7 of 89 windows of a quiet 2-core run did, docs/performance.md).
-// Trajectories do not depend on the thread count (simulation.hpp), so the choice changes only the speed.
+// Trajectories do not depend on the thread count, nor do the energy ledger's sums (per share of the
+// work, simulation.hpp), so the choice changes only the speed.
 #pragma once
 
 #include <chrono>
