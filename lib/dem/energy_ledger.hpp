@@ -1,6 +1,7 @@
 // The engine's energy ledger: what the contact laws dissipate and what the walls' motion does to
 // the particles, summed per share of the work in a step and then in share order (deterministic for
-// a given count of shares, whichever threads run them; no per-pair storage). Off (Ledger = false), it books nothing and costs nothing. SI.
+// a given count of shares, whichever threads run them; no per-pair storage). Off (Ledger = false),
+// it books nothing and costs nothing. SI.
 #pragma once
 
 #include <cmath>

@@ -4,9 +4,10 @@
 // their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
 // functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). Trajectories are
 // bit-identical for any thread count (the energy ledger's sums, per share of the work, for any
-// thread count that runs the steps of a run given the same threads). A large scene's spheres are reordered cell by cell now and then
-// (spatial_order.hpp): particles() is then in that order, input_index() names each sphere's place
-// in the input, and in_input_order() gives the state as it was ordered. SI units.
+// thread count that runs the steps of a run given the same threads). A large scene's spheres are
+// reordered cell by cell now and then (spatial_order.hpp): particles() is then in that order,
+// input_index() names each sphere's place in the input, and in_input_order() gives the state as
+// it was ordered. SI units.
 #pragma once
 
 #include <algorithm>
