@@ -16,12 +16,12 @@ plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 1 pt 5 title 'fine', \
   'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.4', \
   'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 1.96'
-set title 'collapsed at the measured k = 1.2'
+set title 'collapsed at the measured k = 0.995'
 set xlabel 'γ̄ / S_f^k (N/m)'
 plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 1 pt 5 title 'fine', \
-  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(1.2034593517279997) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.4', \
-  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(1.2034593517279997) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 1.96'
+  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9947359789808123) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 2 pt 6 title 'S_f = 1.4', \
+  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9947359789808123) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorlines lw 2 lc 3 pt 7 title 'S_f = 1.96'
 set title 'collapsed at k = 1 (stress, Eq. 11)'
 set xlabel 'γ̄ / S_f^k (N/m)'
 plot \
