@@ -490,7 +490,7 @@ TEST_CASE("Results do not depend on the thread count changing between steps, wet
     for (auto& v : p.velocity) v.z() -= 1.0;
     // A tube around the cloud, sliding sideways and up through the whole run: its work on the
     // spheres is booked per share too.
-    FrustumWall tube{Vec3(0.01, 0.01, -1.6e-3), 0.016, 0.016, 0.03, Vec3(1.5, 0, 0.5), 0, 1};
+    const FrustumWall tube{Vec3(0.01, 0.01, -1.6e-3), 0.016, 0.016, 0.03, Vec3(1.5, 0, 0.5), 0, 1};
     const std::vector<Wall> walls{PlaneWall{Vec3(0, 0, -1.6e-3), Vec3::UnitZ()}, tube};
     using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
     const auto k = bridge::mikami_coefficients(0.05, ContactAngle{Degrees{20}});
