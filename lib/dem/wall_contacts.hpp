@@ -58,20 +58,14 @@ public:
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
         // Without the ledger the runs carry about equal work (each wall contact a sphere had last
         // step weighs wall_acting_cost: the pour puts the floor's spheres first, and equal counts
-        // left one thread 2.8 times the other's work), cut again every resplit_every steps (cut
-        // every step, the serial pass over the flags took 1.6-1.9 % of a 2-thread step of 4 800
-        // spheres, docs/performance.md); with it, equal counts, as its sums are per share and
-        // must not follow the engaged flags, which a checkpoint does not carry.
+        // left one thread 2.8 times the other's work); with it, equal counts, as its sums are per
+        // share and must not follow the engaged flags, which a checkpoint does not carry.
         const int parts = n * static_cast<long>(walls.size()) > parallel_threshold ? given : 1;
-        const bool resized = split_.size() != static_cast<std::size_t>(parts) + 1 || split_.back() != p.size();
-        if (resized || (!Ledger && ++since_split_ >= resplit_every)) {
-            since_split_ = 0;
-            split_by_work(split_, p.size(), parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t i) {
-                std::size_t k = 0;
-                for (const auto& engaged : engaged_) k += engaged[i];
-                return k;
-            });
-        }
+        split_by_work(split_, p.size(), parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t i) {
+            std::size_t k = 0;
+            for (const auto& engaged : engaged_) k += engaged[i];
+            return k;
+        });
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
 #pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, n)
         for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
@@ -168,9 +162,7 @@ private:
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
-    std::vector<std::size_t> split_;                  // each share's run of spheres
-    int since_split_ = 0;                             // steps since split_ was cut
-    static constexpr int resplit_every = 20;          // steps (without the ledger: the wall contacts move)
+    std::vector<std::size_t> split_;                  // each share's run of spheres this step
 };
 
 }  // namespace demscale::dem
