@@ -252,7 +252,7 @@ private:
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
         for (long i = 0; i < n; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
         pair_contacts_.add_forces(p_, law_, dt_, ledger_, given_threads_);
-        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_))
+        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_, neighbors_))
             throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
                                      std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);

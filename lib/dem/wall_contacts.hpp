@@ -1,18 +1,21 @@
 // The particle–wall contacts of the engine: per wall and particle the contact history and whether
-// it may be non-zero, each particle's shape against a wall, and the forces of a step, particle by
-// particle (a particle's walls in wall order), with the walls' power for the ledger. SI units.
+// it may be non-zero, each particle's shape against a wall, the spheres near each wall (the only
+// ones a step looks at), and the forces of a step, particle by particle (a particle's walls in wall
+// order), with the walls' power for the ledger. SI units.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <omp.h>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
 #include "dem/energy_ledger.hpp"
+#include "dem/neighbor_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/walls.hpp"
 #include "dem/work_split.hpp"
@@ -48,12 +51,15 @@ public:
     // Adds this step's wall forces and torques to the particles; the ledger gets each share's
     // losses and the walls' power. The spheres are cut into one run per thread the run was given
     // (`given`), whatever number of threads runs this step (the ledger's sums, per share, stay the
-    // same bits). Returns a particle that has left the domain through a wall (the caller stops the run).
+    // same bits). `neighbors`: the engine's list, whose build positions and skin bound how far a
+    // sphere has moved (refresh_near). Returns a particle that has left the domain through a wall
+    // (the caller stops the run).
     std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
-                                     EnergyLedger<Ledger>& ledger, int given) {
+                                     EnergyLedger<Ledger>& ledger, int given, const NeighborList& neighbors) {
         const double reach = law.range();
         const long n = static_cast<long>(p.size());
         std::optional<Escape> escape;
+        refresh_near(p, walls, time, reach, neighbors);
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
         // Without the ledger the runs carry about equal work (each wall contact a sphere had last
@@ -72,8 +78,9 @@ public:
             Lost lost;
             double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
             for (std::size_t i = split_[part]; i < split_[part + 1]; ++i) {
-                if (p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
+                if (!near_any_[i] || p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls.size(); ++w) {
+                    if (!near_[w][i]) continue;  // surely out of its reach and holding nothing (refresh_near)
                     std::uint8_t& engaged = engaged_[w][i];
                     auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
                         if (engaged) law.release(state_[w][i], lost), engaged = 0;
@@ -135,6 +142,7 @@ public:
                 if (const auto c = contact(p, law, wall, time, dt, i)) ledger.wall_took(law.stored_energy(*c, state_[index][i]).total());
         state_.erase(state_.begin() + static_cast<long>(index));
         engaged_.erase(engaged_.begin() + static_cast<long>(index));
+        stale_ = true;
     }
 
     // The first wall (in wall order) particle i touches, described ("from its contact with wall 1
@@ -155,14 +163,51 @@ public:
     void read(CheckpointReader& r, std::size_t particles) {
         for (auto& states : state_) r.array(states);
         for (auto& e : engaged_) e.assign(particles, 1);
+        stale_ = true;
     }
 
 private:
+    // Marks the spheres each wall may touch before the next refresh: those not surely farther
+    // than r + reach + 2 skin from it where the neighbour list was built, and those it held last
+    // step. Until the list's next build a sphere moves at most one skin from there (the list's
+    // rebuild rule, neighbor_list.hpp), and the marks are refreshed before a wall has moved half a
+    // skin: every unmarked sphere stays over half a skin out of reach and holds nothing, so
+    // skipping it changes no bit. Refreshed at each build of the list, when a wall moved half a
+    // skin or changed, and after a restore.
+    void refresh_near(const Particles& p, const std::vector<Wall>& walls, double time, double reach, const NeighborList& neighbors) {
+        const double skin = neighbors.cutoff_gap();
+        bool fresh = !stale_ && near_builds_ == neighbors.builds() && near_walls_.size() == walls.size() && near_any_.size() == p.size();
+        for (std::size_t w = 0; fresh && w < walls.size(); ++w) {
+            const std::optional<double> shift = wall_shift(near_walls_[w], near_time_, walls[w], time);
+            fresh = shift && *shift < 0.5 * skin;
+        }
+        if (fresh) return;
+        const std::vector<Vec3>& from = neighbors.built_at();
+        if (from.size() != p.size()) throw std::logic_error("wall contacts: the neighbour list is not built for these spheres");
+        near_any_.assign(p.size(), 0);
+        near_.resize(walls.size());
+        for (std::size_t w = 0; w < walls.size(); ++w) {
+            const WallBound bound(walls[w], time);
+            near_[w].resize(p.size());
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                near_[w][i] = engaged_[w][i] || !bound.surely_farther_than(from[i], p.radius[i] + reach + 2 * skin);
+                near_any_[i] |= near_[w][i];
+            }
+        }
+        near_walls_ = walls, near_time_ = time, near_builds_ = neighbors.builds(), stale_ = false;
+    }
+
     std::vector<std::vector<LawState>> state_;        // per wall, per particle
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
     std::vector<std::size_t> split_;                  // each share's run of spheres this step
+    std::vector<std::vector<std::uint8_t>> near_;     // per wall, per particle: 1 when it may touch (refresh_near)
+    std::vector<std::uint8_t> near_any_;              // per particle: 1 when it may touch some wall
+    std::vector<Wall> near_walls_;                    // the walls as they were at the last refresh,
+    double near_time_ = 0;                            // at that time, s,
+    std::size_t near_builds_ = 0;                     // after that many builds of the neighbour list
+    bool stale_ = true;                               // walls or state changed: refresh at the next step
 };
 
 }  // namespace demscale::dem

@@ -25,6 +25,19 @@ WallPoint closest(const FrustumWall& w, const Vec3& x, double t) {
 
 }  // namespace
 
+std::optional<double> wall_shift(const Wall& before, double t0, const Wall& now, double t1) {
+    if (before.index() != now.index()) return std::nullopt;
+    if (const auto* a = std::get_if<PlaneWall>(&before)) {
+        const auto& b = std::get<PlaneWall>(now);
+        if (a->point != b.point || a->normal != b.normal) return std::nullopt;
+        return 0.0;
+    }
+    const auto& a = std::get<FrustumWall>(before);
+    const auto& b = std::get<FrustumWall>(now);
+    if (a.bottom_radius != b.bottom_radius || a.top_radius != b.top_radius || a.height != b.height) return std::nullopt;
+    return ((b.base_centre + b.offset(t1)) - (a.base_centre + a.offset(t0))).norm();
+}
+
 WallPoint closest_wall_point(const Wall& wall, const Vec3& centre, double t) {
     return std::visit([&](const auto& w) { return closest(w, centre, t); }, wall);
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <variant>
 
 #include "dem/particles.hpp"
@@ -60,6 +61,10 @@ struct WallPoint {
     bool behind = false;     // the centre is on the wrong side of a one-sided wall
 };
 WallPoint closest_wall_point(const Wall& wall, const Vec3& centre, double t);
+
+// How far a wall's surface moved from `before` at t0 to `now` at t1, m, when it only translated
+// (a frustum's base and its lift); none when it changed shape or kind, or a plane moved at all.
+std::optional<double> wall_shift(const Wall& before, double t0, const Wall& now, double t1);
 
 // Whether centres lie farther than a distance from a wall's surface, and on its side: a bound the
 // engine checks before closest_wall_point, for the particles no wall touches. Set up once per
