@@ -57,27 +57,32 @@ public:
     std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
                                      EnergyLedger<Ledger>& ledger, int given, const NeighborList& neighbors) {
         const double reach = law.range();
-        const long n = static_cast<long>(p.size());
         std::optional<Escape> escape;
         refresh_near(p, walls, time, reach, neighbors);
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
-        // Without the ledger the runs carry about equal work (each wall contact a sphere had last
-        // step weighs wall_acting_cost: the pour puts the floor's spheres first, and equal counts
-        // left one thread 2.8 times the other's work); with it, equal counts, as its sums are per
-        // share and must not follow the engaged flags, which a checkpoint does not carry.
-        const int parts = n * static_cast<long>(walls.size()) > parallel_threshold ? given : 1;
-        split_by_work(split_, p.size(), parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t i) {
-            std::size_t k = 0;
-            for (const auto& engaged : engaged_) k += engaged[i];
-            return k;
+        // Without the ledger the threads take runs of the marked spheres (near_list_) of about
+        // equal work, each wall contact a sphere had last step weighing wall_acting_cost (the
+        // pour puts the floor's spheres first: equal counts left one thread 2.8 times the other's
+        // work, and runs of all the spheres left one thread most of the marked ones,
+        // docs/performance.md). With it, runs of equal counts of all the spheres, as its sums are
+        // per share and must not follow the engaged flags or the marks, which a checkpoint does
+        // not carry.
+        const std::uint32_t* listed = Ledger ? nullptr : near_list_.data();  // item k is sphere listed[k]
+        const std::size_t items = Ledger ? p.size() : near_list_.size();
+        const int parts = static_cast<long>(items * walls.size()) > parallel_threshold ? given : 1;
+        split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) {
+            std::size_t acting = 0;
+            for (const auto& engaged : engaged_) acting += engaged[listed[k]];
+            return acting;
         });
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
-#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, n)
+#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, listed)
         for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
             Lost lost;
             double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
-            for (std::size_t i = split_[part]; i < split_[part + 1]; ++i) {
+            for (std::size_t k = split_[part]; k < split_[part + 1]; ++k) {
+                const std::size_t i = listed ? listed[k] : k;
                 if (!near_any_[i] || p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
                 for (std::size_t w = 0; w < walls.size(); ++w) {
                     if (!near_[w][i]) continue;  // surely out of its reach and holding nothing (refresh_near)
@@ -185,6 +190,7 @@ private:
         const std::vector<Vec3>& from = neighbors.built_at();
         if (from.size() != p.size()) throw std::logic_error("wall contacts: the neighbour list is not built for these spheres");
         near_any_.assign(p.size(), 0);
+        near_list_.clear();
         near_.resize(walls.size());
         for (std::size_t w = 0; w < walls.size(); ++w) {
             const WallBound bound(walls[w], time);
@@ -194,6 +200,8 @@ private:
                 near_any_[i] |= near_[w][i];
             }
         }
+        for (std::uint32_t i = 0; i < p.size(); ++i)
+            if (near_any_[i]) near_list_.push_back(i);
         near_walls_ = walls, near_time_ = time, near_builds_ = neighbors.builds(), stale_ = false;
     }
 
@@ -204,6 +212,7 @@ private:
     std::vector<std::size_t> split_;                  // each share's run of spheres this step
     std::vector<std::vector<std::uint8_t>> near_;     // per wall, per particle: 1 when it may touch (refresh_near)
     std::vector<std::uint8_t> near_any_;              // per particle: 1 when it may touch some wall
+    std::vector<std::uint32_t> near_list_;            // those particles, ascending
     std::vector<Wall> near_walls_;                    // the walls as they were at the last refresh,
     double near_time_ = 0;                            // at that time, s,
     std::size_t near_builds_ = 0;                     // after that many builds of the neighbour list

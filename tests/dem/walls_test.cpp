@@ -131,3 +131,40 @@ TEST_CASE("A wall moved by hand between steps acts at once", "[dem][walls]") {
     sim.refresh_forces();
     CHECK(sim.particles().force[0].z() == Approx(1e3 * 0.4e-3).epsilon(1e-9));
 }
+
+TEST_CASE("Without the ledger every sphere near a wall gets its force on any thread count", "[dem][walls][threads]") {
+    // Without the ledger the threads split only the spheres marked near a wall, by their work. 600
+    // spheres (r = 1 mm, 3 mm apart, none touching another) cut 0.4 mm into a wall at x = 0, and
+    // beside each, 50 mm out along x, a sphere far from it: in the engine's order (rows along x)
+    // the marked spheres are every other one, 600 of them, enough for the loop to run threaded.
+    // Hand values: a sphere at the wall is pushed out with k δ, one far from it feels nothing.
+    Material m;
+    m.linear_stiffness = 1e3;
+    const double r = 1e-3, cut = 0.4e-3;
+    Particles p;
+    for (int k = 0; k < 600; ++k) {
+        const double y = 3e-3 * (k % 30), z = 3e-3 * (k / 30);
+        p.add({r - cut, y, z}, r, 2500, Vec3::Zero());
+        p.add({0.05, y, z}, r, 2500, Vec3::Zero());
+    }
+    using Law = ContactLaw<NormalLinear>;
+    for (const int threads : {1, 2, 3}) {
+        omp_set_num_threads(threads);
+        Simulation<Law, false> sim(p, Law(m), {PlaneWall{Vec3::Zero(), Vec3::UnitX()}}, Vec3::Zero(), 1e-7, 0.05 * r);
+        sim.stop_governing();
+        sim.step();
+        const Particles& q = sim.particles();
+        std::size_t pushed = 0, untouched = 0, alternations = 0;
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const bool at_wall = q.position[i].x() < 2 * r;
+            if (at_wall && q.force[i].x() == Approx(1e3 * cut).epsilon(1e-3) && q.force[i].tail<2>().norm() == 0.0) ++pushed;
+            if (!at_wall && q.force[i].norm() == 0.0) ++untouched;
+            if (i > 0 && at_wall != (q.position[i - 1].x() < 2 * r)) ++alternations;
+        }
+        CAPTURE(threads);
+        REQUIRE(alternations > 1000);  // the marked spheres lie apart in memory, as the case needs
+        CHECK(pushed == 600);
+        CHECK(untouched == 600);
+    }
+    omp_set_num_threads(omp_get_num_procs());
+}
