@@ -91,9 +91,13 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
     for (std::size_t k = 0; k < pairs_.size(); ++k) first_of[k] = pairs_[k].first;
     const Buckets by_first = bucket_by(first_of, n);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted(pairs_.size());
-    for (std::size_t k = 0; k < sorted.size(); ++k) sorted[k] = pairs_[by_first.order[k]];
-    for (std::size_t i = 0; i < n; ++i)
+    // Each sphere's pairs gathered and sorted apart from the others', on all threads.
+#pragma omp parallel for schedule(static) if (count > parallel_threshold)
+    for (long ii = 0; ii < count; ++ii) {
+        const auto i = static_cast<std::size_t>(ii);
+        for (std::uint32_t k = by_first.start[i]; k < by_first.start[i + 1]; ++k) sorted[k] = pairs_[by_first.order[k]];
         std::sort(sorted.begin() + by_first.start[i], sorted.begin() + by_first.start[i + 1]);
+    }
     pairs_.swap(sorted);
 }
 

@@ -208,7 +208,9 @@ private:
         }
         shares_ = {};  // drawn again for the new list (share_work)
         shapes_.resize(pairs_.size());
-        for (std::size_t k = 0; k < pairs_.size(); ++k) shapes_[k] = pair_shape(p, pairs_[k].i, pairs_[k].j);
+        const long listed = static_cast<long>(pairs_.size());
+#pragma omp parallel for schedule(static) if (listed > parallel_threshold)  // two roots and four divisions a pair
+        for (long k = 0; k < listed; ++k) shapes_[k] = pair_shape(p, pairs_[k].i, pairs_[k].j);
     }
 
     // What a listed pair contributes: nothing (beyond the law's reach, or apart with no bridge
