@@ -209,7 +209,7 @@ private:
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
-    std::vector<std::size_t> split_;                  // each share's run of spheres this step
+    std::vector<std::size_t> split_;                  // each share's run of items this step (add_forces)
     std::vector<std::vector<std::uint8_t>> near_;     // per wall, per particle: 1 when it may touch (refresh_near)
     std::vector<std::uint8_t> near_any_;              // per particle: 1 when it may touch some wall
     std::vector<std::uint32_t> near_list_;            // those particles, ascending
