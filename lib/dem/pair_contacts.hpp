@@ -83,8 +83,7 @@ public:
     // pairs in ascending pair order, after gravity: the same bits on any number of threads.
     void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger, int given) {
         const double reach = law.range();
-        const int parts = static_cast<long>(pairs_.size()) <= parallel_threshold ? 1 : std::min(given, PairShares::most_threads);
-        if (shares_.runs.size() != static_cast<std::size_t>(parts)) share_work(p, parts);
+        const int parts = share(p, given);
 #pragma omp parallel num_threads(std::min(parts, omp_get_max_threads()))
         {
             for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
@@ -126,6 +125,24 @@ public:
                 }
             }
         }
+    }
+
+    // Draws the threads' shares of the list (share_work) unless drawn for it already; returns their
+    // number: one per thread the run was given (`given`), one for a short list. sphere_work(x):
+    // what else the thread of sphere x's run does for it (its walls), in listed pairs' tests.
+    template <class SphereWork = NoSphereWork>
+    int share(const Particles& p, int given, SphereWork sphere_work = {}) {
+        const int parts = static_cast<long>(pairs_.size()) <= parallel_threshold ? 1 : std::min(given, PairShares::most_threads);
+        if (shares_.runs.size() != static_cast<std::size_t>(parts)) share_work(p, parts, sphere_work);
+        return parts;
+    }
+    // Each share's run of spheres (PairShares::spheres), once share() drew them.
+    const std::vector<std::size_t>& sphere_shares() const { return shares_.spheres; }
+
+    // The axis the slabs cut from the next draw on (0 x, 1 y, 2 z; -1: the longest side of the
+    // pairs' box): the one the engine's spatial sort lays its layers along.
+    void cut_slabs_along(int axis) {
+        if (axis != slab_axis_) slab_axis_ = axis, shares_ = {};
     }
 
     // Adds what the listed pairs hold now to e, J (in pair order).
@@ -254,7 +271,8 @@ private:
     // left one thread waiting at 0.09 ms of a 0.2 ms loop, docs/performance.md). With the ledger,
     // runs of equal counts of consecutive pairs: its sums are per share and must not depend on
     // the positions at the draw or the engaged flags, which a checkpoint does not carry.
-    void share_work(const Particles& p, int parts) {
+    template <class SphereWork>
+    void share_work(const Particles& p, int parts, SphereWork sphere_work) {
         if constexpr (Ledger) {
             std::vector<std::size_t> split;
             split_by_work(split, pairs_.size(), parts, 0, [](std::size_t) { return std::size_t{0}; });
@@ -264,7 +282,8 @@ private:
                 return part;
             });
         } else {
-            const auto owner = slab_owner(pairs_, p, parts, [&](std::size_t k) { return 1 + acting_cost * engaged_[k]; });
+            const auto owner =
+                slab_owner(pairs_, p, parts, slab_axis_, [&](std::size_t k) { return 1 + acting_cost * engaged_[k]; }, sphere_work);
             shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) { return owner[k]; });
         }
         results_.assign(pairs_.size(), PairResult{});  // the spheres that gather changed: zero where a pair does not act
@@ -296,7 +315,8 @@ private:
     std::vector<std::uint8_t> engaged_;
     std::vector<PairShape> shapes_;
     std::vector<PairResult> results_;
-    PairShares shares_;  // which thread takes which pairs (share_work)
+    PairShares shares_;    // which thread takes which pairs (share_work)
+    int slab_axis_ = -1;  // the axis the slabs cut (cut_slabs_along)
     std::vector<std::uint32_t> incidence_start_, incidence_;
 };
 

@@ -59,10 +59,11 @@ public:
         const ThreadsForStep threads(governor_);
         half_kick();
         // NaN or inf anywhere makes the sum non-finite (in any order): one check per step.
-        double probe = 0;
-        const long n = static_cast<long>(p_.size());
-#pragma omp parallel for schedule(static) reduction(+ : probe) if (n > parallel_threshold)
-        for (long i = 0; i < n; ++i) p_.position[i] += dt_ * p_.velocity[i], probe += p_.position[i].sum();
+        const double probe = over_spheres([&](std::size_t begin, std::size_t end) {
+            double sum = 0;
+            for (std::size_t i = begin; i < end; ++i) p_.position[i] += dt_ * p_.velocity[i], sum += p_.position[i].sum();
+            return sum;
+        });
         if (!std::isfinite(probe))
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
@@ -180,7 +181,7 @@ public:
     }
 
 private:
-    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-8";
+    static constexpr CheckpointTag checkpoint_tag = "demscale-ckpt-9";
 
     // Sets the governor's thread count for one step and restores the caller's after it (also when
     // the step throws), then reports the step's end to the governor.
@@ -208,13 +209,34 @@ private:
     }
 
     void half_kick() {
-        const long n = static_cast<long>(p_.size());
-#pragma omp parallel for schedule(static) if (n > parallel_threshold)
-        for (long i = 0; i < n; ++i) {
-            if (p_.fixed[i]) continue;
-            p_.velocity[i] += kick_[i].translation * p_.force[i];
-            p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
-        }
+        over_spheres([&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                if (p_.fixed[i]) continue;
+                p_.velocity[i] += kick_[i].translation * p_.force[i];
+                p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
+            }
+            return 0.0;
+        });
+    }
+
+    // Runs pass(begin, end) over runs of the spheres that together cover them all, on the threads
+    // of the step, and returns the sum of what the runs return. Each thread takes the spheres of
+    // its share of the pairs (PairContacts::sphere_shares): a sphere's state is then written and
+    // read by one core through the step (pair forces, walls, kicks, drift), and, the spheres
+    // sorted across the slabs, no cache line of it crosses between the cores but at a slab's face.
+    // Runs of equal counts before the first shares are drawn or when the pairs are too few to share.
+    template <class Pass>
+    double over_spheres(Pass pass) {
+        const std::size_t n = p_.size();
+        const std::vector<std::size_t>& shared = pair_contacts_.sphere_shares();
+        const bool by_pairs = shared.size() > 2 && shared.back() == n;
+        const int parts = by_pairs ? static_cast<int>(shared.size()) - 1 : static_cast<long>(n) > parallel_threshold ? given_threads_ : 1;
+        auto first = [&](int part) { return by_pairs ? shared[part] : n * static_cast<std::size_t>(part) / static_cast<std::size_t>(parts); };
+        if (parts == 1) return pass(std::size_t{0}, n);
+        double sum = 0;
+#pragma omp parallel for schedule(static, 1) num_threads(std::min(parts, omp_get_max_threads())) reduction(+ : sum)
+        for (int part = 0; part < parts; ++part) sum += pass(first(part), first(part + 1));
+        return sum;
     }
 
     // A reorder is due at the first build and every sort_.every_steps steps after it, at those
@@ -235,7 +257,9 @@ private:
     // pairs (renumbered; the next merge indexes them).
     void reorder_spatially() {
         const double r_max = *std::max_element(p_.radius.begin(), p_.radius.end());
-        const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max);
+        const int axis = longest_side(p_);  // the slabs' axis (over_spheres)
+        const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max, axis);
+        pair_contacts_.cut_slabs_along(axis);
         ++sorts_, sorted_at_ = steps_;
         std::vector<std::uint32_t> new_index(order.size()), input(order.size());
         for (std::uint32_t k = 0; k < order.size(); ++k) new_index[order[k]] = k, input[k] = input_index_[order[k]];
@@ -248,17 +272,24 @@ private:
 
     void compute_forces() {
         ledger_.begin_step(given_threads_);
-        const long n = static_cast<long>(p_.size());
-#pragma omp parallel for schedule(static) if (n > parallel_threshold)
-        for (long i = 0; i < n; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+        // The threads' shares, pairs and walls weighed together (the spheres' runs, over_spheres).
+        pair_contacts_.share(p_, given_threads_, [&](std::size_t i) { return wall_contacts_.work_of(i); });
+        over_spheres([&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+            return 0.0;
+        });
         pair_contacts_.add_forces(p_, law_, dt_, ledger_, given_threads_);
-        if (const auto escape = wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_, neighbors_))
+        if (const auto escape =
+                wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_, neighbors_, pair_contacts_.sphere_shares()))
             throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
                                      std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);
-        double probe = 0;  // NaN or inf in any force or torque makes the sum non-finite (in any order)
-#pragma omp parallel for schedule(static) reduction(+ : probe) if (n > parallel_threshold)
-        for (long i = 0; i < n; ++i) probe += p_.force[i].sum() + p_.torque[i].sum();
+        // NaN or inf in any force or torque makes the sum non-finite (in any order).
+        const double probe = over_spheres([&](std::size_t begin, std::size_t end) {
+            double sum = 0;
+            for (std::size_t i = begin; i < end; ++i) sum += p_.force[i].sum() + p_.torque[i].sum();
+            return sum;
+        });
         if (!std::isfinite(probe))  // find it (a sum of huge finite values may overflow: then none is found)
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i, "force on"));

@@ -1,9 +1,13 @@
-// A cache-friendly order of the spheres: cell by cell through a grid of cubic cells, rows along x,
-// then y, then layers in z (as LAMMPS' `atom_modify sort` bins atoms), so that spheres near in
-// space are near in memory and a pair's two spheres share cache lines. The engine reorders its
-// spheres by it every so often (SpatialSort). In random order a packed bed of 3e5-1e6 spheres ran
-// about 3x slower per sphere than in this one; a Z-order curve did a little worse than rows
-// (performance.md, "Spatial sort").
+// A cache-friendly order of the spheres: cell by cell through a grid of cubic cells, in rows along
+// one axis, then the next, then layers along the slowest (as LAMMPS' `atom_modify sort` bins atoms),
+// so that spheres near in space are near in memory and a pair's two spheres share cache lines. The
+// engine reorders its spheres by it every so often (SpatialSort), with the scene's longest side as
+// the slowest axis: the threads' slabs cut that side (pair_shares.hpp), so each thread's spheres
+// then lie in one stretch of memory, which it alone writes through the step (with layers in z
+// across slabs in x, each cache line of sphere state crossed between the cores about every step,
+// docs/performance.md). In random order a packed bed of 3e5-1e6 spheres ran about 3x slower per
+// sphere than in this one; a Z-order curve did a little worse than rows (performance.md, "Spatial
+// sort").
 #pragma once
 
 #include <cstddef>
@@ -25,8 +29,12 @@ struct SpatialSort {
     std::size_t every_steps = 1000;
 };
 
-// The spheres' indices ordered cell by cell (edge `cell`, m; rows along x, then y, then z), ties
-// (one cell) in index order: order[k] is the sphere to put k-th.
-std::vector<std::uint32_t> spatial_order(const Particles& p, double cell);
+// The spheres' indices ordered cell by cell (edge `cell`, m), the cells in layers along
+// `slowest` (0 x, 1 y, 2 z), each layer in rows along the lower of the other two axes, row after
+// row along the higher; ties (one cell) in index order: order[k] is the sphere to put k-th.
+std::vector<std::uint32_t> spatial_order(const Particles& p, double cell, int slowest = 2);
+
+// The axis of the longest side of the box around the spheres (the first of equal sides); 2 for none.
+int longest_side(const Particles& p);
 
 }  // namespace demscale::dem

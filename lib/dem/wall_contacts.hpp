@@ -42,6 +42,7 @@ public:
     void reorder(const std::vector<std::uint32_t>& order) {
         for (auto& states : state_) gather(states, order);
         for (auto& engaged : engaged_) gather(engaged, order);
+        stale_ = true;  // the marks are by the old order (a build follows, which refreshes them too)
     }
 
     struct Escape {  // a particle found behind a wall: it left the domain through it
@@ -52,30 +53,38 @@ public:
     // losses and the walls' power. The spheres are cut into one run per thread the run was given
     // (`given`), whatever number of threads runs this step (the ledger's sums, per share, stay the
     // same bits). `neighbors`: the engine's list, whose build positions and skin bound how far a
-    // sphere has moved (refresh_near). Returns a particle that has left the domain through a wall
-    // (the caller stops the run).
+    // sphere has moved (refresh_near). `sphere_shares`: the pair loop's runs of spheres
+    // (PairShares::spheres), which the threads take here too when there are `given` of them.
+    // Returns a particle that has left the domain through a wall (the caller stops the run).
     std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
-                                     EnergyLedger<Ledger>& ledger, int given, const NeighborList& neighbors) {
+                                     EnergyLedger<Ledger>& ledger, int given, const NeighborList& neighbors,
+                                     const std::vector<std::size_t>& sphere_shares) {
         const double reach = law.range();
         std::optional<Escape> escape;
         refresh_near(p, walls, time, reach, neighbors);
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
-        // Without the ledger the threads take runs of the marked spheres (near_list_) of about
-        // equal work, each wall contact a sphere had last step weighing wall_acting_cost (the
-        // pour puts the floor's spheres first: equal counts left one thread 2.8 times the other's
-        // work, and runs of all the spheres left one thread most of the marked ones,
-        // docs/performance.md). With it, runs of equal counts of all the spheres, as its sums are
-        // per share and must not follow the engaged flags or the marks, which a checkpoint does
-        // not carry.
+        // Without the ledger the threads take the marked spheres (near_list_) of their runs of
+        // the pair loop's spheres, which keeps each sphere's state on one core; before the pairs
+        // are shared, runs of the marked spheres of about equal work, each wall contact a sphere
+        // had last step weighing wall_acting_cost (the pour puts the floor's spheres first: equal
+        // counts left one thread 2.8 times the other's work, docs/performance.md). With the
+        // ledger, runs of equal counts of all the spheres, as its sums are per share and must not
+        // follow the engaged flags or the marks, which a checkpoint does not carry.
         const std::uint32_t* listed = Ledger ? nullptr : near_list_.data();  // item k is sphere listed[k]
         const std::size_t items = Ledger ? p.size() : near_list_.size();
         const int parts = static_cast<long>(items * walls.size()) > parallel_threshold ? given : 1;
-        split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) {
-            std::size_t acting = 0;
-            for (const auto& engaged : engaged_) acting += engaged[listed[k]];
-            return acting;
-        });
+        if (!Ledger && sphere_shares.size() == static_cast<std::size_t>(parts) + 1) {
+            split_.resize(sphere_shares.size());
+            for (std::size_t t = 0; t < split_.size(); ++t)
+                split_[t] = static_cast<std::size_t>(std::lower_bound(near_list_.begin(), near_list_.end(), sphere_shares[t]) - near_list_.begin());
+        } else {
+            split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) {
+                std::size_t acting = 0;
+                for (const auto& engaged : engaged_) acting += engaged[listed[k]];
+                return acting;
+            });
+        }
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
 #pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, listed)
         for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
@@ -117,6 +126,15 @@ public:
             ledger.add(part, lost, wall_power);
         }
         return escape;
+    }
+
+    // What particle i's walls cost a step, in listed pairs' tests (work_split.hpp), as of the
+    // last step: its checks when it is marked near a wall, and its acting contacts.
+    std::size_t work_of(std::size_t i) const {
+        std::size_t acting = 0;
+        for (const auto& engaged : engaged_) acting += engaged[i];
+        const bool near = !stale_ && i < near_any_.size() && near_any_[i];
+        return (near ? wall_check_in_pair_tests : 0) + acting_cost * acting;
     }
 
     // The contact geometry of particle i with a wall, if within the law's range of it.

@@ -15,6 +15,9 @@ namespace demscale::dem {
 // docs/performance.md).
 inline constexpr std::size_t acting_cost = 16;      // per acting pair
 inline constexpr std::size_t wall_acting_cost = 8;  // per acting wall contact of a sphere
+// The same in listed pairs' tests, for slabs that weigh pairs and walls together (pair_shares.hpp):
+// a sphere checked against the walls weighs two tests, each acting wall contact a pair's law.
+inline constexpr std::size_t wall_check_in_pair_tests = 2;
 
 // split (resized to parts + 1): run t is [split[t], split[t + 1]) of the n items, the runs of
 // about equal weight. acting(k): how many of item k's contacts acted (0 for none), read only when

@@ -18,8 +18,9 @@ namespace demscale::slump {
 // rest criterion, fill measures and motion at the end; 5: law parameters keyed from their tables;
 // 6: scenes of 16 384 spheres or more reorder them along a space-filling curve (dem/spatial_order);
 // 7: Hertz–Mindlin with four square roots a contact instead of seven (results move in the last bits);
-// 8: every scene reorders its spheres in space, not only large ones (the pair order follows).
-inline constexpr int cache_format = 8;
+// 8: every scene reorders its spheres in space, not only large ones (the pair order follows);
+// 9: the sort lays its layers along the scene's longest side, not always z (the pair order follows).
+inline constexpr int cache_format = 9;
 
 // The lines, in a fixed order: the tool's version and cache format, geometry, which laws act, the
 // parameters of each part that acts (a part that does not act leaves no trace: a dry run has no

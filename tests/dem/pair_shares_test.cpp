@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dem/pair_shares.hpp"
+#include "dem/spatial_order.hpp"
 
 using namespace demscale::dem;
 
@@ -40,6 +41,8 @@ TEST_CASE("Pair shares: runs in pair order, and only spheres with pairs of two t
         // (0,2) and (1,2) add to their first sphere at once, (2,3) to its second; 2 gathers.
         CHECK(s.direct == std::vector<std::uint8_t>{3, 1, 1, 2, 3});
         CHECK(s.gathering == std::vector<std::uint32_t>{2});
+        // Spheres 0, 1, 2 have their first pair on thread 0, 3 and 4 on thread 1.
+        CHECK(s.spheres == std::vector<std::size_t>{0, 3, 5});
     }
     SECTION("alternating pairs: runs of one pair") {
         // Threads 0 1 0 1 0: sphere 0 has pairs on 0 and 1, 1 on 0 only, 2 on 1 and 0, 3 on 1
@@ -50,12 +53,24 @@ TEST_CASE("Pair shares: runs in pair order, and only spheres with pairs of two t
         CHECK(s.runs[1] == Runs{{1, 2}, {3, 4}});
         CHECK(s.gathering == std::vector<std::uint32_t>{0, 2, 3});
         CHECK(s.direct == std::vector<std::uint8_t>{2, 0, 1, 0, 2});
+        // First pairs: 0 and 1 in (0,1) on 0, 2 in (0,2) on 1, 3 in (2,3) on 1, 4 in (3,4) on 0:
+        // three spheres for thread 0, two for thread 1, as runs 0-2 and 3-4.
+        CHECK(s.spheres == std::vector<std::size_t>{0, 3, 5});
+    }
+    SECTION("spheres without pairs go with the sphere before them") {
+        // Seven spheres, pairs (1,2) on 0, (2,3) and (4,5) on 1: 0 (none, first) and 1, 2 with
+        // thread 0; 3, 4, 5 and 6 (none, after 5) with thread 1.
+        const std::vector<Pair> few{{1, 2}, {2, 3}, {4, 5}};
+        const std::vector<int> owner{0, 1, 1};
+        const PairShares s = shares_of(few, 7, 2, [&](std::size_t k) { return owner[k]; });
+        CHECK(s.spheres == std::vector<std::size_t>{0, 3, 7});
     }
     SECTION("one thread: one run, every sphere direct") {
         const PairShares s = shares_of(pairs, 5, 1, [](std::size_t) { return 0; });
         CHECK(s.runs[0] == Runs{{0, 5}});
         CHECK(s.direct == std::vector<std::uint8_t>(5, PairShares::both_direct));
         CHECK(s.gathering.empty());
+        CHECK(s.spheres == std::vector<std::size_t>{0, 5});
     }
 }
 
@@ -66,13 +81,36 @@ TEST_CASE("Pair shares: slabs of equal weight along the longest side", "[dem][th
     for (std::uint32_t k = 0; k < 9; ++k) chain.push_back({k, k + 1});
     for (int axis = 0; axis < 3; ++axis) {
         const Particles p = on_a_line(10, axis);
-        CHECK(slab_owner(chain, p, 2, [](std::size_t) { return 1; }) == std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1, 1});
+        CHECK(slab_owner(chain, p, 2, -1, [](std::size_t) { return 1; }) == std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1, 1});
         // The first pair weighs 9 of 17: its middle (4.5) is below half, the next (9.5) above.
-        CHECK(slab_owner(chain, p, 2, [](std::size_t k) { return k == 0 ? 9 : 1; }) ==
+        CHECK(slab_owner(chain, p, 2, -1, [](std::size_t k) { return k == 0 ? 9 : 1; }) ==
               std::vector<std::uint8_t>{0, 1, 1, 1, 1, 1, 1, 1, 1});
         // Three slabs of three: thirds at 3 and 6.
-        CHECK(slab_owner(chain, p, 3, [](std::size_t) { return 1; }) == std::vector<std::uint8_t>{0, 0, 0, 1, 1, 1, 2, 2, 2});
+        CHECK(slab_owner(chain, p, 3, -1, [](std::size_t) { return 1; }) == std::vector<std::uint8_t>{0, 0, 0, 1, 1, 1, 2, 2, 2});
+        // Work at a sphere counts where the sphere lies: 9 at sphere 0 weighs as the first pair's
+        // 9 did above; 9 at sphere 9, beyond the pairs' box, counts in the last bin, with pair 8's
+        // 1: 10 of 18, its middle (13) above half, all the others' below.
+        auto unit = [](std::size_t) { return std::size_t{1}; };
+        CHECK(slab_owner(chain, p, 2, -1, unit, [](std::size_t x) { return x == 0 ? 9 : 0; }) ==
+              std::vector<std::uint8_t>{0, 1, 1, 1, 1, 1, 1, 1, 1});
+        CHECK(slab_owner(chain, p, 2, -1, unit, [](std::size_t x) { return x == 9 ? 9 : 0; }) ==
+              std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 1});
     }
+}
+
+TEST_CASE("Pair shares: slabs cut the axis they are given, not always the longest side", "[dem][threads]") {
+    // First spheres at x = k and y = 0, 10, 2, 12, 4, 14, 6, 16, 8 (y the longest side), one pair
+    // each, equal weights: by y the four lowest (k = 0, 2, 4, 6) fall below half, by x k = 0-3.
+    const std::vector<double> y{0, 10, 2, 12, 4, 14, 6, 16, 8};
+    Particles p;
+    for (std::size_t k = 0; k < 9; ++k) p.add(Vec3(static_cast<double>(k), y[k], 0), 0.5, 1.0);
+    p.add(Vec3(9, 0, 0), 0.5, 1.0);
+    std::vector<Pair> chain;
+    for (std::uint32_t k = 0; k < 9; ++k) chain.push_back({k, k + 1});
+    auto unit = [](std::size_t) { return 1; };
+    CHECK(slab_owner(chain, p, 2, -1, unit) == std::vector<std::uint8_t>{0, 1, 0, 1, 0, 1, 0, 1, 1});
+    CHECK(slab_owner(chain, p, 2, 1, unit) == std::vector<std::uint8_t>{0, 1, 0, 1, 0, 1, 0, 1, 1});
+    CHECK(slab_owner(chain, p, 2, 0, unit) == std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1, 1});
 }
 
 TEST_CASE("Pair shares on a random cloud: each pair once, gathering exactly where a sphere's pairs span threads",
@@ -87,7 +125,7 @@ TEST_CASE("Pair shares on a random cloud: each pair once, gathering exactly wher
         for (std::uint32_t j = i + 1; j < p.size(); ++j)
             if ((p.position[i] - p.position[j]).norm() < 2.5e-3) pairs.push_back({i, j});
     for (const int parts : {2, 3, 4}) {
-        const auto owner = slab_owner(pairs, p, parts, [](std::size_t) { return 1; });
+        const auto owner = slab_owner(pairs, p, parts, -1, [](std::size_t) { return 1; });
         const PairShares s = shares_of(pairs, p.size(), parts, [&](std::size_t k) { return owner[k]; });
         std::vector<int> seen(pairs.size(), 0);
         std::vector<std::set<int>> threads_of(p.size());
@@ -115,5 +153,52 @@ TEST_CASE("Pair shares on a random cloud: each pair once, gathering exactly wher
         }
         // Slabs across the 40 mm side: the spheres within a pair's reach of a cut, not the cloud.
         CHECK(static_cast<double>(s.gathering.size()) < 0.2 * (parts - 1) * static_cast<double>(p.size()));
+        // Each share's run of spheres is as long as the count of spheres whose first pair it takes
+        // (a sphere without pairs counted with the one before).
+        std::vector<std::size_t> first_pair(p.size(), pairs.size()), count(parts, 0);
+        std::vector<int> first_share(p.size(), 0);
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            for (const std::uint32_t x : {pairs[k].i, pairs[k].j})
+                if (k < first_pair[x]) first_pair[x] = k, first_share[x] = owner[k];
+        for (std::size_t x = 0; x < p.size(); ++x) {
+            if (first_pair[x] == pairs.size() && x > 0) first_share[x] = first_share[x - 1];
+            ++count[first_share[x]];
+        }
+        REQUIRE(s.spheres.size() == static_cast<std::size_t>(parts) + 1);
+        CHECK(s.spheres.front() == 0);
+        for (int t = 0; t < parts; ++t) CHECK(s.spheres[t + 1] - s.spheres[t] == count[t]);
     }
+}
+
+TEST_CASE("Pair shares: spheres sorted in layers across the slabs lie in their own thread's run", "[dem][threads][sort]") {
+    // The flat cloud of the test above, sorted in layers along its longest side (x), as the engine
+    // sorts: each run of spheres is then its slab but for spheres near a cut. In the layers along
+    // z, the slabs' spheres lie all over memory and about half would sit in another's run.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    Particles cloud;
+    for (int k = 0; k < 2000; ++k) cloud.add(Vec3(0.04 * u(rng), 0.02 * u(rng), 0.004 * u(rng)), 1e-3, 1e-5);
+    auto misplaced = [&](int slowest) {
+        Particles p = cloud;
+        p.reorder(spatial_order(p, 2e-3, slowest));
+        std::vector<Pair> pairs;
+        for (std::uint32_t i = 0; i < p.size(); ++i)
+            for (std::uint32_t j = i + 1; j < p.size(); ++j)
+                if ((p.position[i] - p.position[j]).norm() < 2.5e-3) pairs.push_back({i, j});
+        const auto owner = slab_owner(pairs, p, 2, 0, [](std::size_t) { return 1; });
+        const PairShares s = shares_of(pairs, p.size(), 2, [&](std::size_t k) { return owner[k]; });
+        // Spheres in a run not their own: their first pair falls to the other thread.
+        std::vector<int> first_share(p.size(), -1);
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            for (const std::uint32_t x : {pairs[k].i, pairs[k].j})
+                if (first_share[x] < 0) first_share[x] = owner[k];
+        std::size_t off = 0;
+        for (std::size_t x = 0; x < p.size(); ++x) off += first_share[x] >= 0 && first_share[x] != (x < s.spheres[1] ? 0 : 1);
+        return off;
+    };
+    REQUIRE(longest_side(cloud) == 0);
+    const std::size_t across = misplaced(0), along = misplaced(2);
+    INFO("misplaced: layers across the slabs " << across << ", along " << along << " of 2000");
+    CHECK(across < 100);   // within a cell (2 mm) of the cut at x = 20 mm: at most a tenth of the cloud
+    CHECK(along > 600);
 }

@@ -35,6 +35,32 @@ TEST_CASE("Spatial order: cell by cell, rows along x, then y, then layers in z, 
     CHECK(spatial_order(q, cell) == std::vector<std::uint32_t>{3, 0, 2, 1});
 }
 
+TEST_CASE("Spatial order: layers along the longest side, rows along the lower of the other two axes", "[dem][sort]") {
+    // The 3 x 3 x 2 grid above with one sphere more; the box around the centres is 2 x 2 x 1: x and
+    // y tie, and the first of equal sides counts as the longest. Layers along x, rows along y, row
+    // after row along z: cell (x, y, z) at y + 3z + 6x.
+    const double cell = 1.0;
+    Particles q;
+    q.add(Vec3(2.5, 0.5, 0.5), 0.1, 1000);  // (2,0,0): 12
+    q.add(Vec3(1.5, 1.5, 1.5), 0.1, 1000);  // (1,1,1): 10
+    q.add(Vec3(0.5, 2.5, 0.5), 0.1, 1000);  // (0,2,0): 2
+    q.add(Vec3(0.5, 0.5, 0.5), 0.1, 1000);  // (0,0,0): 0
+    q.add(Vec3(0.5, 0.5, 1.5), 0.1, 1000);  // (0,0,1): 3
+    CHECK(longest_side(q) == 0);
+    CHECK(spatial_order(q, cell, 0) == std::vector<std::uint32_t>{3, 2, 4, 1, 0});
+    // Layers along y, rows along x, row after row along z: x + 3z + 6y.
+    // (2,0,0) 2, (1,1,1) 10, (0,2,0) 12, (0,0,0) 0, (0,0,1) 3.
+    CHECK(spatial_order(q, cell, 1) == std::vector<std::uint32_t>{3, 0, 4, 1, 2});
+    // Along z, as by default: x + 3y + 9z: 2, 13, 6, 0, 9.
+    CHECK(spatial_order(q, cell, 2) == spatial_order(q, cell));
+    CHECK(spatial_order(q, cell) == std::vector<std::uint32_t>{3, 0, 2, 4, 1});
+    // A tall column: z the longest side; none at all: z.
+    Particles column;
+    column.add(Vec3(0, 0, 0), 0.1, 1000), column.add(Vec3(0.5, 0.2, 3), 0.1, 1000);
+    CHECK(longest_side(column) == 2);
+    CHECK(longest_side(Particles{}) == 2);
+}
+
 namespace {
 
 using Wet = ContactLaw<NormalHertz, TangentialMindlin, CohesionLiquidBridge, RollingEpsd>;
