@@ -4,7 +4,9 @@
 # --threads), alternating over ROUNDS rounds (the order flips each round). Quiet: before each run
 # the script logs the cores busy with other work (2 s of /proc/stat) and gives no ratio for a pair
 # above BUSY_LIMIT (default 0.3). Contended: the same pairs with a busy loop holding one core
-# (started 5 s before; the load it adds is logged). Prints every run, the quiet 2-thread speed-up
+# (started 5 s before; the load it adds is logged). Each run's line also logs the cross-core cost
+# of a cache line just before it (`demscale bench --core-link`, crossing ns): on a virtual machine
+# the second thread's gain follows it (docs/performance.md). Prints every run, the quiet 2-thread speed-up
 # (1-thread time over 2-thread time) and the contended 2-thread time over the contended 1-thread
 # time, per round and their medians. SPREAD=seconds shortens the spread (default: the scene's).
 # Usage: [ROUNDS=2] [SPREAD=s] [BUSY_LIMIT=0.3] bench/threads.sh [SCENE] (default kantro_dry.toml)
@@ -29,7 +31,7 @@ run() {  # threads label
     --format json --out "$work/$2" --no-png >"$work/$2.json" 2>/dev/null
   json "$work/$2.json" wall_s
 }
-printf '%-10s %-6s %-8s %10s %10s\n' machine round threads busy_cores wall_s >&2
+printf '%-10s %-6s %-8s %10s %8s %10s\n' machine round threads busy_cores link_ns wall_s >&2
 quiet_ratios= contended_ratios=
 for machine in quiet contended; do
   if [ "$machine" = contended ]; then
@@ -44,8 +46,9 @@ for machine in quiet contended; do
     for t in "${order[@]}"; do
       b=$(busy)
       [ "$machine" = quiet ] && awk -v b="$b" -v l="$busy_limit" 'BEGIN {exit !(b > l)}' && loaded=1
+      l=$(link)
       wall[$t]=$(run "$t" "${machine}_${t}_$r")
-      printf '%-10s %-6s %-8s %10s %10s\n' "$machine" "$r" "$t" "$b" "${wall[$t]}" >&2
+      printf '%-10s %-6s %-8s %10s %8s %10s\n' "$machine" "$r" "$t" "$b" "$l" "${wall[$t]}" >&2
     done
     if [ "$machine" = quiet ]; then
       if [ "$loaded" -eq 1 ]; then echo "round $r: other work on the cores; no ratio" >&2; continue; fi

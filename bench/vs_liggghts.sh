@@ -6,7 +6,8 @@
 # Before each run the script measures how busy the cores are (2 s of /proc/stat, nothing of ours
 # running) and logs it; a pair whose runs started with more than BUSY_LIMIT cores (default 0.3)
 # busy with other work gets no ratio. Prints every run, every pair's ratio (LIGGGHTS time over
-# demscale time) and the median per thread count, and both final piles.
+# demscale time) and the median per thread count, and both final piles. Each run's line also logs
+# the cross-core cost of a cache line just before it (link_ns, `demscale bench --core-link`).
 # Usage: [ROUNDS=2] [BUSY_LIMIT=0.3] bench/vs_liggghts.sh [SCENE]
 # (default data/scenes/kantro_dry.toml; several minutes per round). Last line: ratio_dry_1thread=X.XX
 set -euo pipefail
@@ -41,7 +42,7 @@ run_liggghts() {  # ranks round; loop time only (setup excluded)
   cp "$work/lig/final.dump" "$work/lig/final$1.dump"
   awk '/^Loop time of/ {s += $4} END {printf "%.3f", s}' "$work/lig/log$1_$2"
 }
-printf '%-6s %-8s %-9s %10s %12s\n' round threads engine busy_cores wall_s >&2
+printf '%-6s %-8s %-9s %10s %8s %12s\n' round threads engine busy_cores link_ns wall_s >&2
 declare -A ratios
 for t in 1 2; do
   for r in $(seq 1 "$rounds"); do
@@ -49,8 +50,9 @@ for t in 1 2; do
     loaded=0
     for e in "${order[@]}"; do
       b=$(busy); awk -v b="$b" -v l="$busy_limit" 'BEGIN {exit !(b > l)}' && loaded=1
+      n=$(link)
       if [ "$e" = demscale ]; then d=$(run_demscale "$t" "$r"); w=$d; else l=$(run_liggghts "$t" "$r"); w=$l; fi
-      printf '%-6s %-8s %-9s %10s %12s\n' "$r" "$t" "$e" "$b" "$w" >&2
+      printf '%-6s %-8s %-9s %10s %8s %12s\n' "$r" "$t" "$e" "$b" "$n" "$w" >&2
     done
     if [ "$loaded" -eq 1 ]; then
       echo "round $r, $t thread(s): other work on the cores; no ratio" >&2

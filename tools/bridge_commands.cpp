@@ -13,6 +13,7 @@
 #include "bridge/validity.hpp"
 #include "bridge/young_laplace.hpp"
 #include "cli_common.hpp"
+#include "core/core_link.hpp"
 #include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "io/bridge_table_file.hpp"
@@ -35,7 +36,7 @@ struct Options {
     std::string table = default_bridge_table;
     std::string out = "bridge_table.csv";
     std::string out_dir = default_plots;
-    bool quick = false, no_png = false, dem = false;
+    bool quick = false, no_png = false, dem = false, core_link = false;
     std::string scene = shipped("scenes/small_wet.toml");
     double seconds = 0.2;
     std::string sizes;     // bench --dem --sizes: the size sweep
@@ -249,7 +250,25 @@ int run_size_sweep(const Options& o) {
     return 0;
 }
 
+// How dear sharing data between two threads is now (core/core_link.hpp), for the scripts' logs.
+int run_core_link(const Options& o) {
+    if (o.dem) throw InputError("--core-link", "given with --dem", "on its own (it times two threads, not the engine)");
+    const auto link = measure_core_link();
+    if (!link) throw InputError("--core-link", "one thread", "a machine where OpenMP runs two threads (OMP_NUM_THREADS >= 2)");
+    io::Table t;
+    t.title = "Cache lines between two cores: each of two threads updates 4 000 lines, shuffled, 1 500 rounds";
+    const auto load = load_average();
+    t.metadata = {{"kept", "each thread its own lines"},
+                  {"crossing", "each thread the lines the other wrote the round before"},
+                  {"load average before", load ? format_short(*load, 3) : "unknown"}};
+    t.columns = {"kept_ns_per_line", "crossing_ns_per_line", "crossing_over_kept", "empty_region_us"};
+    t.rows.push_back({link->kept_ns, link->crossing_ns, link->crossing_ns / link->kept_ns, link->region_us});
+    std::cout << io::render(t, io::parse_format(o.format, "--format"));
+    return 0;
+}
+
 int run_bench(const Options& o) {
+    if (o.core_link) return run_core_link(o);
     if (o.dem && !o.sizes.empty()) return run_size_sweep(o);
     if (!o.sizes.empty()) throw InputError("--sizes", o.sizes, "with --dem (the size sweep benchmarks the DEM engine)");
     if (o.dem) return run_dem_bench(o);
@@ -302,6 +321,7 @@ std::vector<Command> bridge_commands(CLI::App& app) {
 
     auto* bench = app.add_subcommand("bench", "benchmarks: cost per bridge force evaluation of every model (--dem: DEM engine)");
     bench->add_option("--seconds", o->seconds, "length of each timing run")->capture_default_str()->check(finite_positive);
+    bench->add_flag("--core-link", o->core_link, "time a cache line crossing between two cores against one kept on its core (the host's state for threads)");
     bench->add_flag("--dem", o->dem, "benchmark the DEM engine instead: the lift-and-spread phase of one settled scene under each law combination");
     bench->add_option("--scene", o->scene, "scene for --dem (default: data/scenes/small_wet.toml)");
     bench->add_option("--sizes", o->sizes, "with --dem: the size sweep, particle counts, e.g. 5e3,1e4,1e5,1e6 (the scene's cone scaled)");

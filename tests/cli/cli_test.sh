@@ -226,6 +226,12 @@ case $case_name in
     expect 2 '--sizes = "5e7".*\(99, 2e\+07\)' -- "$demscale" bench --dem --sizes 5e7
     expect 2 '--steps = 5: accepted 10 to 100000' -- "$demscale" bench --dem --sizes 300 --steps 5
     expect 2 '--timed: value nan; accepted a finite number > 0' -- "$demscale" bench --dem --sizes 300 --timed nan ;;
+  bench_core_link)
+    # The cross-core probe the bench scripts log: four positive finite numbers; not with --dem.
+    expect 0 '^kept_ns_per_line,crossing_ns_per_line,crossing_over_kept,empty_region_us$' -- "$demscale" bench --core-link --format csv
+    grep -v '^#' "$work/out" | awk -F, 'NR == 2 {for (i = 1; i <= 4; ++i) if (!($i + 0 > 0) || $i ~ /n|N/) exit 1; ok = 1} END {exit !ok}' ||
+      { cat "$work/out" >&2; fail "not four positive finite numbers"; }
+    expect 2 '--core-link = given with --dem: accepted on its own' -- "$demscale" bench --core-link --dem ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
