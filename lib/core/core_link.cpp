@@ -19,7 +19,6 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 }  // namespace
 
 std::optional<CoreLink> measure_core_link() {
-    if (omp_get_max_threads() < 2 && omp_get_num_procs() < 2) return std::nullopt;
     // Two halves of 4 000 lines (256 kB each, within a core's own cache), visited in a shuffled
     // order so that no prefetcher hides a line's trip.
     constexpr std::size_t lines = 4000;

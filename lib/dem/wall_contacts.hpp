@@ -79,11 +79,7 @@ public:
             for (std::size_t t = 0; t < split_.size(); ++t)
                 split_[t] = static_cast<std::size_t>(std::lower_bound(near_list_.begin(), near_list_.end(), sphere_shares[t]) - near_list_.begin());
         } else {
-            split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) {
-                std::size_t acting = 0;
-                for (const auto& engaged : engaged_) acting += engaged[listed[k]];
-                return acting;
-            });
+            split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) { return acting_walls(listed[k]); });
         }
         // Scalars each thread keeps in its own registers (shared ones are read through memory).
 #pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, listed)
@@ -131,10 +127,8 @@ public:
     // What particle i's walls cost a step, in listed pairs' tests (work_split.hpp), as of the
     // last step: its checks when it is marked near a wall, and its acting contacts.
     std::size_t work_of(std::size_t i) const {
-        std::size_t acting = 0;
-        for (const auto& engaged : engaged_) acting += engaged[i];
         const bool near = !stale_ && i < near_any_.size() && near_any_[i];
-        return (near ? wall_check_in_pair_tests : 0) + acting_cost * acting;
+        return (near ? wall_check_in_pair_tests : 0) + acting_cost * acting_walls(i);
     }
 
     // The contact geometry of particle i with a wall, if within the law's range of it.
@@ -190,6 +184,13 @@ public:
     }
 
 private:
+    // How many walls held particle i last step (contacts with history).
+    std::size_t acting_walls(std::size_t i) const {
+        std::size_t acting = 0;
+        for (const auto& engaged : engaged_) acting += engaged[i];
+        return acting;
+    }
+
     // Marks the spheres each wall may touch before the next refresh: those not surely farther
     // than r + reach + 2 skin from it where the neighbour list was built, and those it held last
     // step. Until the list's next build a sphere moves at most one skin from there (the list's
