@@ -105,24 +105,24 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
 // two spheres have moved more than `skin` between them. The two largest displacements bound that
 // for every pair: a tighter test than "any sphere moved skin/2" when one sphere outruns the rest.
 bool NeighborList::needs_rebuild(const Particles& p) const {
-    if (built_at_.size() != p.size()) return true;
-    double first = 0, second = 0;  // the two largest squared displacements, m²
-    auto keep = [](double moved, double& top, double& next) {
-        if (moved > top) next = top, top = moved;
-        else if (moved > next) next = moved;
-    };
+    if (!built_for(p)) return true;
+    Shifts all;
     const long n = static_cast<long>(p.size());
     // Each thread's two largest, then the largest two of those: the same two values in any order.
 #pragma omp parallel if (n > parallel_threshold)
     {
-        double top = 0, next = 0;
+        Shifts mine;
 #pragma omp for schedule(static) nowait
-        for (long i = 0; i < n; ++i) keep((p.position[i] - built_at_[i]).squaredNorm(), top, next);
+        for (long i = 0; i < n; ++i) mine.keep(squared_shift(p, static_cast<std::size_t>(i)));
 #pragma omp critical
-        keep(top, first, second), keep(next, first, second);
+        all += mine;
     }
+    return needs_rebuild(all);
+}
+
+bool NeighborList::needs_rebuild(const Shifts& all) const {
     // The margin keeps rounding on the safe side.
-    return std::sqrt(first) + std::sqrt(second) > skin_ * (1.0 - 1e-9);
+    return std::sqrt(all.top) + std::sqrt(all.next) > skin_ * (1.0 - 1e-9);
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, double gap) {

@@ -21,6 +21,22 @@ public:
     // places in memory); without ranks, i < j.
     void build(const Particles& p, const std::vector<std::uint32_t>* rank = nullptr);
     bool needs_rebuild(const Particles& p) const;
+
+    // The two largest squared shifts of some spheres since the build, m² (any order of keeping
+    // and merging gives the same two): the engine gathers them in its pass over the spheres.
+    struct Shifts {
+        double top = 0, next = 0;
+        void keep(double shift) {
+            if (shift > top) next = top, top = shift;
+            else if (shift > next) next = shift;
+        }
+        Shifts& operator+=(const Shifts& other) { return keep(other.top), keep(other.next), *this; }
+    };
+    // Sphere i's squared shift since the build (built for these spheres: built_for(p)).
+    double squared_shift(const Particles& p, std::size_t i) const { return (p.position[i] - built_at_[i]).squaredNorm(); }
+    bool built_for(const Particles& p) const { return built_at_.size() == p.size(); }
+    // Whether the spheres whose shifts these are, all of them, call for a rebuild.
+    bool needs_rebuild(const Shifts& all) const;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
     std::size_t builds() const { return builds_; }
 

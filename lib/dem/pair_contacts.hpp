@@ -1,9 +1,9 @@
 // The particle pairs of the engine: the listed pairs in (i, j) order with their contact history,
 // the merge of that history into each new neighbour list, and the forces of a step, gathered so
 // that every particle sums its pairs in ascending pair order whatever the thread count.
-// Threads (OpenMP): each thread takes the pairs of a slab of space and adds their forces at once to
-// the spheres only it touches; the spheres on a slab's face gather theirs from a per-pair buffer
-// (pair_shares.hpp). SI.
+// Threads (OpenMP, the engine's region): each thread takes the pairs of a slab of space and adds
+// their forces at once to the spheres of its run that only it touches; the others gather theirs
+// from a per-pair buffer (pair_shares.hpp). SI.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <numeric>
 #include <omp.h>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -71,60 +72,67 @@ public:
         gather(pairs_, order), gather(states_, order), gather(engaged_, order);
     }
 
-    // Adds this step's pair forces and torques to the particles (which hold gravity already); the
-    // ledger gets what each share's pairs dissipated. The pairs are cut into one share per thread the
-    // run was given (`given`), whatever number of threads runs this step (one thread may run them
-    // all when the governor chose it, thread_governor.hpp): the ledger's sums, per share, stay the
-    // same bits. Each thread evaluates its shares of the pairs
-    // (pair_shares.hpp) in pair order and adds to the spheres only it touches at once; after a
-    // barrier, the spheres on a share's face gather their pairs' results from the buffer (a pair
-    // that does not act holds a zero result there, listed_result: adding ±0 to a sum that starts at
-    // +0 or non-zero leaves it as it was, so the gather needs no branch). Every sphere sums its
-    // pairs in ascending pair order, after gravity: the same bits on any number of threads.
-    void add_forces(Particles& p, const Law& law, double dt, EnergyLedger<Ledger>& ledger, int given) {
+    // The forces of a step come in two stages, each run by the thread of a share (the engine's
+    // step, simulation.hpp): first add_share_forces for every share, then, after a barrier,
+    // gather_faces for every share. The pairs are cut into one share per thread the run was given
+    // (share()), whatever number of threads runs the step (one thread may run them all when the
+    // governor chose it, thread_governor.hpp): the ledger's sums, per share, stay the same bits.
+
+    // Share `part`'s pairs, in pair order: each adds its force and torques at once to the spheres
+    // only this share touches; the others' go to the buffer (a pair that does not act holds a zero
+    // result there, listed_result: adding ±0 to a sum that starts at +0 or non-zero leaves it as
+    // it was, so the gather needs no branch). `lost`: what the share's pairs dissipated.
+    void add_share_forces(int part, Particles& p, const Law& law, double dt, Lost& lost) {
         const double reach = law.range();
-        const int parts = share(p, given);
-#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads()))
-        {
-            for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
-                Lost lost;
-                for (const auto& [first, end] : shares_.runs[part])
-                    for (std::size_t k = first; k < end; ++k) {
-                        PairResult r;
-                        const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
-                        if (acts == Acts::nothing) continue;
-                        const PairIndex q = pairs_[k];
-                        const std::uint8_t direct = shares_.direct[k];
-                        if (direct & 1) {
-                            p.force[q.i] += r.force_i;
-                            if (acts == Acts::contact) p.torque[q.i] += r.torque_i;
-                        }
-                        if (direct & 2) {
-                            p.force[q.j] -= r.force_i;
-                            if (acts == Acts::contact) p.torque[q.j] += r.torque_j;
-                        }
-                        if (direct != PairShares::both_direct) results_[k] = r;
-                    }
-                ledger.add(part, lost);
-            }
-            if (!shares_.gathering.empty()) {
-#pragma omp barrier
-                const long faces = static_cast<long>(shares_.gathering.size());
-#pragma omp for schedule(static)
-                for (long g = 0; g < faces; ++g) {
-                    const std::size_t i = shares_.gathering[static_cast<std::size_t>(g)];
-                    Vec3 f = p.force[i], t = p.torque[i];
-                    for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
-                        const PairResult& r = results_[incidence_[e] / 2];
-                        const bool is_j = incidence_[e] % 2;
-                        f += (is_j ? -1.0 : 1.0) * r.force_i;  // x + (-1·y) is x − y, bit for bit
-                        t += is_j ? r.torque_j : r.torque_i;
-                    }
-                    p.force[i] = f;
-                    p.torque[i] = t;
+        for (const auto& [first, end] : shares_.runs[static_cast<std::size_t>(part)])
+            for (std::size_t k = first; k < end; ++k) {
+                PairResult r;
+                const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
+                if (acts == Acts::nothing) continue;
+                const PairIndex q = pairs_[k];
+                const std::uint8_t direct = shares_.direct[k];
+                if (direct & 1) {
+                    p.force[q.i] += r.force_i;
+                    if (acts == Acts::contact) p.torque[q.i] += r.torque_i;
                 }
+                if (direct & 2) {
+                    p.force[q.j] -= r.force_i;
+                    if (acts == Acts::contact) p.torque[q.j] += r.torque_j;
+                }
+                if (direct != PairShares::both_direct) results_[k] = r;
             }
+    }
+
+    // The spheres on a slab's face in share `part`'s run of spheres (sphere_shares), once every
+    // share's pairs are done: each sums its pairs' results from the buffer in ascending pair order,
+    // so every sphere gets its pairs in that order, after gravity, on any number of threads.
+    void gather_faces(int part, Particles& p) const {
+        for (const std::uint32_t i : faces_of(part)) {
+            Vec3 f = p.force[i], t = p.torque[i];
+            for (std::uint32_t e = incidence_start_[i]; e < incidence_start_[i + 1]; ++e) {
+                const PairResult& r = results_[incidence_[e] / 2];
+                const bool is_j = incidence_[e] % 2;
+                f += (is_j ? -1.0 : 1.0) * r.force_i;  // x + (-1·y) is x − y, bit for bit
+                t += is_j ? r.torque_j : r.torque_i;
+            }
+            p.force[i] = f;
+            p.torque[i] = t;
         }
+    }
+
+    // The spheres of share `part`'s run that gather (gather_faces), ascending.
+    std::span<const std::uint32_t> faces_of(int part) const {
+        const auto& g = shares_.gathering;
+        const auto from = std::lower_bound(g.begin(), g.end(), shares_.spheres[static_cast<std::size_t>(part)]);
+        const auto to = std::lower_bound(from, g.end(), shares_.spheres[static_cast<std::size_t>(part) + 1]);
+        return {from, to};
+    }
+
+    // How long share `part`'s thread took for its work before the barrier this step, s (the pair
+    // loop and what the engine adds to it for the share's spheres): the next draw of the slabs
+    // corrects its weights by these (share_work).
+    void took(int part, double seconds) {
+        costs_.took_step(static_cast<std::size_t>(part), seconds);
     }
 
     // Draws the threads' shares of the list (share_work) unless drawn for it already; returns their
@@ -283,7 +291,7 @@ private:
             });
         } else {
             const auto owner =
-                slab_owner(pairs_, p, parts, slab_axis_, [&](std::size_t k) { return 1 + acting_cost * engaged_[k]; }, sphere_work);
+                slab_owner(pairs_, p, parts, slab_axis_, [&](std::size_t k) { return 1 + acting_cost * engaged_[k]; }, sphere_work, &costs_);
             shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) { return owner[k]; });
         }
         results_.assign(pairs_.size(), PairResult{});  // the spheres that gather changed: zero where a pair does not act
@@ -317,6 +325,7 @@ private:
     std::vector<PairResult> results_;
     PairShares shares_;    // which thread takes which pairs (share_work)
     int slab_axis_ = -1;  // the axis the slabs cut (cut_slabs_along)
+    SlabCosts costs_;     // the last draw's slabs and their threads' seconds (took)
     std::vector<std::uint32_t> incidence_start_, incidence_;
 };
 

@@ -1,14 +1,16 @@
 // Which thread evaluates which listed pair, and where its force goes. Each thread takes the pairs
 // of one slab of space (by the position of each pair's first sphere, along the scene's longest
-// side, slabs of about equal work), in ascending pair order. A sphere whose pairs all fall to one
-// thread gets its forces added at once by that thread, in pair order; only the spheres near a
-// slab's face, whose pairs fall to two threads, gather their pairs' results from a buffer after
-// the loop. Both keep each sphere's sum in ascending pair order: the same bits for any split and
-// any thread count. Splitting the list into runs of consecutive pairs instead leaves most spheres
-// on a face unless the spheres are ordered in space (docs/dem-engine.md). The engine's passes over
-// the spheres (kicks, drift, walls) give each thread a run of spheres too, those whose first pair
-// it takes: with the spheres sorted in layers across the slabs' axis (spatial_order.hpp) a run is
-// nearly the thread's slab, and a sphere's state stays in one core's cache through the step.
+// side, slabs of about equal work), in ascending pair order. Each thread also has a run of
+// spheres, those whose first pair it takes (with the spheres sorted in layers across the slabs'
+// axis, spatial_order.hpp, a run is nearly the thread's slab): the engine's step gives it their
+// gravity, walls, checks and kicks, so a sphere's state stays in one core's cache through the
+// step. A sphere of a thread's run whose pairs all fall to that thread gets its forces added at
+// once, in pair order; the others (near a slab's face, whose pairs fall to two threads, or the
+// few placed in another thread's run) gather their pairs' results from a buffer after the loop,
+// by their run's thread: no thread writes to another's run before the barrier. Both keep each
+// sphere's sum in ascending pair order: the same bits for any split and any thread count.
+// Splitting the list into runs of consecutive pairs instead leaves most spheres on a face unless
+// the spheres are ordered in space (docs/dem-engine.md).
 #pragma once
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "dem/particles.hpp"
+#include "dem/slab_costs.hpp"
 
 namespace demscale::dem {
 
@@ -25,7 +28,7 @@ struct PairShares {
     using Run = std::pair<std::size_t, std::size_t>;  // pairs [first, second)
     std::vector<std::vector<Run>> runs;                // per share (thread), ascending
     std::vector<std::uint8_t> direct;                  // per pair: bit 0 adds to i at once, bit 1 to j
-    std::vector<std::uint32_t> gathering;              // spheres with pairs of two threads
+    std::vector<std::uint32_t> gathering;              // spheres that gather, ascending (above)
     // Share t's spheres for the passes over them: [spheres[t], spheres[t + 1]), as many as have
     // their first pair (in pair order) in share t; a sphere without pairs goes with the one before.
     std::vector<std::size_t> spheres;
@@ -56,6 +59,11 @@ PairShares shares_of(const Pairs& pairs, std::size_t n, int parts, Owner owner) 
     std::uint8_t before = 0;
     for (const std::uint8_t t : first_of) before = t == none ? before : t, ++s.spheres[before + 1u];
     for (int t = 0; t < parts; ++t) s.spheres[t + 1u] += s.spheres[t];
+    // A sphere whose pairs all fall to a thread other than its run's (one placed out of its slab
+    // by the order) gathers too: a thread then writes at once only to the spheres of its run.
+    for (std::size_t t = 0; t < static_cast<std::size_t>(parts); ++t)
+        for (std::size_t x = s.spheres[t]; x < s.spheres[t + 1]; ++x)
+            if (thread_of[x] != none && thread_of[x] != t) thread_of[x] = mixed;
     for (std::size_t k = 0; k < pairs.size(); ++k)
         s.direct[k] = static_cast<std::uint8_t>((thread_of[pairs[k].i] != mixed) | (thread_of[pairs[k].j] != mixed) << 1);
     for (std::uint32_t x = 0; x < n; ++x)
@@ -72,10 +80,11 @@ struct NoSphereWork {
 // does, and sphere x adds sphere_work(x) where it lies (its walls, which the thread of its run
 // takes, simulation.hpp); the slabs cut `axis` (0 x, 1 y, 2 z; -1: the longest side of the box
 // around the pairs' first spheres) into `parts` of about equal weight, at a resolution of 1/1024
-// of the box's side.
+// of the box's side. costs (optional): the last draw's slabs with their measured seconds, which
+// correct the weights (SlabCosts::factor_at); replaced by this draw's slabs, their seconds zero.
 template <class Pairs, class Weight, class SphereWork = NoSphereWork>
 std::vector<std::uint8_t> slab_owner(const Pairs& pairs, const Particles& p, int parts, int axis, Weight weight,
-                                     SphereWork sphere_work = {}) {
+                                     SphereWork sphere_work = {}, SlabCosts* costs = nullptr) {
     std::vector<std::uint8_t> owner(pairs.size(), 0);
     if (parts < 2 || pairs.empty()) return owner;
     Vec3 lo = p.position[pairs[0].i], hi = lo;
@@ -87,23 +96,46 @@ std::vector<std::uint8_t> slab_owner(const Pairs& pairs, const Particles& p, int
         return std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, (x[axis] - lo[axis]) * per_bin)));
     };
     auto bin_of = [&](std::size_t k) { return bin_at(p.position[pairs[k].i]); };
-    std::vector<std::size_t> load(bins, 0);
-    std::size_t total = 0;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const std::size_t w = weight(k);
-        load[bin_of(k)] += w, total += w;
+    // Modelled weight per bin: whole numbers, so that the threads' partial sums add up exactly.
+    std::vector<double> load(bins, 0);
+    const long listed = static_cast<long>(pairs.size()), n = static_cast<long>(p.size());
+#pragma omp parallel if (listed > parallel_threshold)
+    {
+        std::vector<double> mine(bins, 0);
+#pragma omp for schedule(static) nowait
+        for (long k = 0; k < listed; ++k) mine[bin_of(static_cast<std::size_t>(k))] += static_cast<double>(weight(static_cast<std::size_t>(k)));
+#pragma omp for schedule(static) nowait
+        for (long x = 0; x < n; ++x)
+            if (const std::size_t w = sphere_work(static_cast<std::size_t>(x))) mine[bin_at(p.position[static_cast<std::size_t>(x)])] += static_cast<double>(w);
+#pragma omp critical
+        for (std::size_t b = 0; b < bins; ++b) load[b] += mine[b];
     }
-    for (std::size_t x = 0; x < p.size(); ++x)
-        if (const std::size_t w = sphere_work(x)) load[bin_at(p.position[x])] += w, total += w;
-    // A bin goes to the slab its middle falls in, by the weight before it.
-    std::vector<std::uint8_t> slab(bins);
-    std::size_t before = 0;
+    auto edge = [&](std::size_t b) { return lo[axis] + static_cast<double>(b) / per_bin; };  // m, a bin's low side
+    std::vector<double> cost(load);  // corrected by the last draw's measurement
+    const std::vector<double> factor = costs ? costs->factors(parts, axis) : std::vector<double>{};
+    double total = 0;
     for (std::size_t b = 0; b < bins; ++b) {
-        const std::size_t middle = 2 * before + load[b];  // twice the weight up to the bin's middle
-        slab[b] = static_cast<std::uint8_t>(std::min<std::size_t>(parts - 1, middle * parts / (2 * std::max<std::size_t>(total, 1))));
-        before += load[b];
+        if (!factor.empty()) cost[b] *= factor[costs->slab_at(edge(b) + 0.5 / per_bin)];
+        total += cost[b];
     }
-    for (std::size_t k = 0; k < pairs.size(); ++k) owner[k] = slab[bin_of(k)];
+    // A bin goes to the slab its middle falls in, by the cost before it.
+    std::vector<std::uint8_t> slab(bins);
+    double before = 0;
+    for (std::size_t b = 0; b < bins; ++b) {
+        const double middle = before + 0.5 * cost[b];
+        slab[b] = static_cast<std::uint8_t>(std::min(parts - 1, static_cast<int>(middle * parts / std::max(total, 1e-300))));
+        before += cost[b];
+    }
+#pragma omp parallel for schedule(static) if (listed > parallel_threshold)
+    for (long k = 0; k < listed; ++k) owner[static_cast<std::size_t>(k)] = slab[bin_of(static_cast<std::size_t>(k))];
+    if (costs) {
+        *costs = SlabCosts{axis, {}, std::vector<double>(static_cast<std::size_t>(parts), 0.0), std::vector<std::vector<double>>(static_cast<std::size_t>(parts))};
+        for (std::size_t b = 0; b < bins; ++b) {
+            costs->weight[slab[b]] += load[b];
+            if (costs->cuts.size() < slab[b]) costs->cuts.resize(slab[b], edge(b));  // an empty slab's cuts coincide
+        }
+        costs->cuts.resize(static_cast<std::size_t>(parts) - 1, hi[axis] + 1.0);
+    }
     return owner;
 }
 

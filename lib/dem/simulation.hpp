@@ -2,12 +2,13 @@
 // (translation and rotation), the rebuild trigger of the Verlet neighbour list, and the checks
 // that stop a run at the first non-finite number. The parts own their state: PairContacts (pairs,
 // their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
-// functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). Trajectories are
-// bit-identical for any thread count (the energy ledger's sums, per share of the work, for any
-// thread count that runs the steps of a run given the same threads). A large scene's spheres are
-// reordered cell by cell now and then (spatial_order.hpp): particles() is then in that order,
-// input_index() names each sphere's place in the input, and in_input_order() gives the state as
-// it was ordered. SI units.
+// functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). A step runs two
+// parallel regions: the half kick with the drift, and the forces with the closing half kick
+// (compute_forces). Trajectories are bit-identical for any thread count (the energy ledger's sums,
+// per share of the work, for any thread count that runs the steps of a run given the same
+// threads). A large scene's spheres are reordered cell by cell now and then (spatial_order.hpp):
+// particles() is then in that order, input_index() names each sphere's place in the input, and
+// in_input_order() gives the state as it was ordered. SI units.
 #pragma once
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -57,19 +59,23 @@ public:
     // chose (thread_governor.hpp); the caller's thread count is restored after the step.
     void step() {
         const ThreadsForStep threads(governor_);
-        half_kick();
-        // NaN or inf anywhere makes the sum non-finite (in any order): one check per step.
-        const double probe = over_spheres([&](std::size_t begin, std::size_t end) {
-            double sum = 0;
-            for (std::size_t i = begin; i < end; ++i) p_.position[i] += dt_ * p_.velocity[i], sum += p_.position[i].sum();
-            return sum;
+        // One pass: half kick and drift, with the two largest shifts since the list's build. NaN
+        // or inf anywhere makes the sum of the positions non-finite (in any order): one check.
+        const bool built = neighbors_.built_for(p_);
+        const Drifted drifted = over_spheres([&](std::size_t begin, std::size_t end) {
+            half_kick(begin, end);
+            Drifted run;
+            for (std::size_t i = begin; i < end; ++i) {
+                p_.position[i] += dt_ * p_.velocity[i], run.sum += p_.position[i].sum();
+                if (built) run.shifts.keep(neighbors_.squared_shift(p_, i));
+            }
+            return run;
         });
-        if (!std::isfinite(probe))
+        if (!std::isfinite(drifted.sum))
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
-        if (sort_due() || neighbors_.needs_rebuild(p_)) rebuild();
-        compute_forces();
-        half_kick();
+        if (sort_due() || !built || neighbors_.needs_rebuild(drifted.shifts)) rebuild();
+        compute_forces(AfterForces::half_kick);
         time_ += dt_;
         ++steps_;
     }
@@ -208,35 +214,49 @@ private:
         wall_contacts_.index(p_);
     }
 
-    void half_kick() {
-        over_spheres([&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                if (p_.fixed[i]) continue;
-                p_.velocity[i] += kick_[i].translation * p_.force[i];
-                p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
-            }
-            return 0.0;
-        });
+    // The half kick of spheres [begin, end).
+    void half_kick(std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (p_.fixed[i]) continue;
+            p_.velocity[i] += kick_[i].translation * p_.force[i];
+            p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
+        }
     }
 
-    // Runs pass(begin, end) over runs of the spheres that together cover them all, on the threads
-    // of the step, and returns the sum of what the runs return. Each thread takes the spheres of
-    // its share of the pairs (PairContacts::sphere_shares): a sphere's state is then written and
-    // read by one core through the step (pair forces, walls, kicks, drift), and, the spheres
-    // sorted across the slabs, no cache line of it crosses between the cores but at a slab's face.
-    // Runs of equal counts before the first shares are drawn or when the pairs are too few to share.
-    template <class Pass>
-    double over_spheres(Pass pass) {
+    struct Drifted {  // what the drift of some spheres found
+        double sum = 0;  // of their positions, m
+        NeighborList::Shifts shifts;
+        Drifted& operator+=(const Drifted& other) { return sum += other.sum, shifts += other.shifts, *this; }
+    };
+
+    // The runs of spheres the passes over them take, one per thread, [runs[t], runs[t + 1]): each
+    // thread takes the spheres of its share of the pairs (PairContacts::sphere_shares): a
+    // sphere's state is then written and read by one core through the step (pair forces, walls,
+    // kicks, drift), and, the spheres sorted across the slabs, no cache line of it crosses between
+    // the cores but at a slab's face. Runs of equal counts before the first shares are drawn or
+    // when the pairs are too few to share.
+    const std::vector<std::size_t>& sphere_runs() {
         const std::size_t n = p_.size();
         const std::vector<std::size_t>& shared = pair_contacts_.sphere_shares();
-        const bool by_pairs = shared.size() > 2 && shared.back() == n;
-        const int parts = by_pairs ? static_cast<int>(shared.size()) - 1 : static_cast<long>(n) > parallel_threshold ? given_threads_ : 1;
-        auto first = [&](int part) { return by_pairs ? shared[part] : n * static_cast<std::size_t>(part) / static_cast<std::size_t>(parts); };
-        if (parts == 1) return pass(std::size_t{0}, n);
-        double sum = 0;
-#pragma omp parallel for schedule(static, 1) num_threads(std::min(parts, omp_get_max_threads())) reduction(+ : sum)
-        for (int part = 0; part < parts; ++part) sum += pass(first(part), first(part + 1));
-        return sum;
+        if (shared.size() > 2 && shared.back() == n) return shared;
+        const auto parts = static_cast<std::size_t>(static_cast<long>(n) > parallel_threshold ? given_threads_ : 1);
+        equal_runs_.resize(parts + 1);
+        for (std::size_t t = 0; t <= parts; ++t) equal_runs_[t] = n * t / parts;
+        return equal_runs_;
+    }
+
+    // Runs pass(begin, end) over the sphere runs on the threads of the step; returns what the
+    // runs return, added in run order.
+    template <class Pass, class Result = std::invoke_result_t<Pass, std::size_t, std::size_t>>
+    Result over_spheres(Pass pass) {
+        const std::vector<std::size_t>& runs = sphere_runs();
+        const int parts = static_cast<int>(runs.size()) - 1;
+        if (parts == 1) return pass(runs[0], runs[1]);
+        std::vector<Result> out(static_cast<std::size_t>(parts));
+#pragma omp parallel for schedule(static, 1) num_threads(std::min(parts, omp_get_max_threads()))
+        for (int part = 0; part < parts; ++part) out[static_cast<std::size_t>(part)] = pass(runs[static_cast<std::size_t>(part)], runs[static_cast<std::size_t>(part) + 1]);
+        for (int part = 1; part < parts; ++part) out[0] += out[static_cast<std::size_t>(part)];
+        return out[0];
     }
 
     // A reorder is due at the first build and every sort_.every_steps steps after it, at those
@@ -270,30 +290,90 @@ private:
         pair_contacts_.renumber(new_index);
     }
 
-    void compute_forces() {
+    enum class AfterForces { nothing, half_kick };  // what compute_forces does next: the step's last half kick
+
+    // The step's forces in one parallel region: each thread sets gravity on its run of spheres,
+    // runs its share of the pairs and the walls of its spheres off the slabs' faces, times that
+    // (the next draw of the slabs follows the times, slab_costs.hpp), and after one barrier
+    // gathers its face spheres' pairs and adds their walls: every sphere gets gravity, its pairs
+    // in pair order, then its walls in wall order, on any number of threads. A single barrier
+    // lets a thread's pairs and walls together balance the other's (pairs and walls apart left
+    // each phase waiting on its own, docs/performance.md). When the walls' runs are not the
+    // pairs' (too few pairs or walls to share), all the walls follow the gathers. Then each
+    // thread sums its spheres' forces and torques (NaN or inf anywhere makes a sum non-finite),
+    // and, `then` the half kick, once every sum is finite and no sphere escaped, gives its spheres the
+    // step's last half kick; otherwise the step stops here, naming the cause.
+    void compute_forces(AfterForces then = AfterForces::nothing) {
         ledger_.begin_step(given_threads_);
-        // The threads' shares, pairs and walls weighed together (the spheres' runs, over_spheres).
-        pair_contacts_.share(p_, given_threads_, [&](std::size_t i) { return wall_contacts_.work_of(i); });
-        over_spheres([&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
-            return 0.0;
-        });
-        pair_contacts_.add_forces(p_, law_, dt_, ledger_, given_threads_);
-        if (const auto escape =
-                wall_contacts_.add_forces(p_, law_, walls_, time_, dt_, ledger_, given_threads_, neighbors_, pair_contacts_.sphere_shares()))
+        const int pair_parts = pair_contacts_.share(p_, given_threads_, [&](std::size_t i) { return wall_contacts_.work_of(i); });
+        const std::vector<std::size_t>& pair_runs = pair_contacts_.sphere_shares();
+        const int wall_parts = wall_contacts_.prepare(p_, law_, walls_, time_, given_threads_, neighbors_, pair_runs);
+        const bool with_pairs = wall_contacts_.follows_sphere_runs();  // a run's walls by its pairs' thread
+        const std::vector<std::size_t>& runs = sphere_runs();          // the checks' and the kick's
+        const int run_parts = static_cast<int>(runs.size()) - 1;
+        const int parts = std::max({pair_parts, wall_parts, run_parts});
+        part_sums_.assign(static_cast<std::size_t>(parts), {});
+        using Take = typename WallContacts<Law, Ledger>::Take;
+#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads()))
+        {
+            const int thread = omp_get_thread_num(), threads = omp_get_num_threads();
+            auto mine = [&](int part) -> PartSums& { return part_sums_[static_cast<std::size_t>(part)]; };
+            for (int part = thread; part < pair_parts; part += threads) {
+                const auto start = std::chrono::steady_clock::now();
+                for (std::size_t i = pair_runs[static_cast<std::size_t>(part)]; i < pair_runs[static_cast<std::size_t>(part) + 1]; ++i)
+                    p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+                pair_contacts_.add_share_forces(part, p_, law_, dt_, mine(part).pairs);
+                if (with_pairs)
+                    wall_contacts_.add_run_forces(part, p_, law_, walls_, time_, dt_, mine(part).walls, mine(part).wall_power,
+                                                  Take::off_faces, pair_contacts_.faces_of(part));
+                pair_contacts_.took(part, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            }
+#pragma omp barrier
+            for (int part = thread; part < pair_parts; part += threads) {
+                pair_contacts_.gather_faces(part, p_);
+                if (with_pairs)
+                    wall_contacts_.add_run_forces(part, p_, law_, walls_, time_, dt_, mine(part).walls, mine(part).wall_power,
+                                                  Take::on_faces, pair_contacts_.faces_of(part));
+            }
+            if (!with_pairs) {  // the walls' runs cross the pairs' faces: after the gathers
+#pragma omp barrier
+                for (int part = thread; part < wall_parts; part += threads)
+                    wall_contacts_.add_run_forces(part, p_, law_, walls_, time_, dt_, mine(part).walls, mine(part).wall_power);
+#pragma omp barrier
+            }
+            for (int part = thread; part < run_parts; part += threads) {
+                double sum = 0;
+                for (std::size_t i = runs[static_cast<std::size_t>(part)]; i < runs[static_cast<std::size_t>(part) + 1]; ++i)
+                    sum += p_.force[i].sum() + p_.torque[i].sum();
+                mine(part).checked = sum;
+            }
+            if (then == AfterForces::half_kick) {
+#pragma omp barrier
+                if (forces_sound(run_parts))
+                    for (int part = thread; part < run_parts; part += threads)
+                        half_kick(runs[static_cast<std::size_t>(part)], runs[static_cast<std::size_t>(part) + 1]);
+            }
+        }
+        for (int part = 0; part < parts; ++part) {  // each share's pairs, then its walls, as the sums always were
+            const PartSums& t = part_sums_[static_cast<std::size_t>(part)];
+            ledger_.add(part, t.pairs), ledger_.add(part, t.walls, t.wall_power);
+        }
+        if (const auto& escape = wall_contacts_.escape())
             throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
                                      std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);
-        // NaN or inf in any force or torque makes the sum non-finite (in any order).
-        const double probe = over_spheres([&](std::size_t begin, std::size_t end) {
-            double sum = 0;
-            for (std::size_t i = begin; i < end; ++i) sum += p_.force[i].sum() + p_.torque[i].sum();
-            return sum;
-        });
-        if (!std::isfinite(probe))  // find it (a sum of huge finite values may overflow: then none is found)
+        if (!forces_sound(run_parts))  // find it (a sum of huge finite values may overflow: then none is found)
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.force[i].allFinite() || !p_.torque[i].allFinite()) throw std::runtime_error(non_finite_report(i, "force on"));
         ledger_.check_finite(steps_, time_);
+    }
+
+    // Whether no sphere escaped and every run's sum of forces and torques is finite.
+    bool forces_sound(int run_parts) const {
+        if (wall_contacts_.escape()) return false;
+        for (int part = 0; part < run_parts; ++part)
+            if (!std::isfinite(part_sums_[static_cast<std::size_t>(part)].checked)) return false;
+        return true;
     }
 
     // Why particle i got a non-finite force, torque or position ("what": "force on", "position of"):
@@ -321,6 +401,14 @@ private:
     PairContacts<Law, Ledger> pair_contacts_;
     WallContacts<Law, Ledger> wall_contacts_;
     EnergyLedger<Ledger> ledger_;
+    using Lost = typename EnergyLedger<Ledger>::Lost;
+    struct alignas(64) PartSums {  // one share's sums in a step (own cache line: threads write them)
+        Lost pairs, walls;
+        double wall_power = 0;  // W
+        double checked = 0;     // Σ of the run's forces and torques (compute_forces' check)
+    };
+    std::vector<PartSums> part_sums_;
+    std::vector<std::size_t> equal_runs_;  // sphere_runs() before the pairs are shared
     double time_ = 0;
     std::size_t steps_ = 0;
     SpatialSort sort_;

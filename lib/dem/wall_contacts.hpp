@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <omp.h>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -49,80 +50,102 @@ public:
         std::size_t particle, wall;
     };
 
-    // Adds this step's wall forces and torques to the particles; the ledger gets each share's
-    // losses and the walls' power. The spheres are cut into one run per thread the run was given
-    // (`given`), whatever number of threads runs this step (the ledger's sums, per share, stay the
-    // same bits). `neighbors`: the engine's list, whose build positions and skin bound how far a
-    // sphere has moved (refresh_near). `sphere_shares`: the pair loop's runs of spheres
-    // (PairShares::spheres), which the threads take here too when there are `given` of them.
-    // Returns a particle that has left the domain through a wall (the caller stops the run).
-    std::optional<Escape> add_forces(Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
-                                     EnergyLedger<Ledger>& ledger, int given, const NeighborList& neighbors,
-                                     const std::vector<std::size_t>& sphere_shares) {
-        const double reach = law.range();
-        std::optional<Escape> escape;
-        refresh_near(p, walls, time, reach, neighbors);
+    // A step's wall forces come in runs of spheres, each run by one thread (the engine's step,
+    // simulation.hpp). prepare() draws the runs and returns their number; add_run_forces adds run
+    // `part`'s forces. The runs are one per thread the run was given (`given`), whatever number
+    // of threads runs this step (the ledger's sums, per share, stay the same bits). `neighbors`:
+    // the engine's list, whose build positions and skin bound how far a sphere has moved
+    // (refresh_near). `sphere_runs`: the pair loop's runs of spheres (PairShares::spheres), which
+    // the runs follow when there are `given` of them: a sphere's state then stays on one core,
+    // and its thread may add its walls before the barrier that its pairs need (faces).
+    int prepare(const Particles& p, const Law& law, const std::vector<Wall>& walls, double time, int given,
+                const NeighborList& neighbors, const std::vector<std::size_t>& sphere_runs) {
+        escape_.reset();
+        refresh_near(p, walls, time, law.range(), neighbors);
         bounds_.clear();
         for (const Wall& wall : walls) bounds_.emplace_back(wall, time);
-        // Without the ledger the threads take the marked spheres (near_list_) of their runs of
-        // the pair loop's spheres, which keeps each sphere's state on one core; before the pairs
-        // are shared, runs of the marked spheres of about equal work, each wall contact a sphere
-        // had last step weighing wall_acting_cost (the pour puts the floor's spheres first: equal
-        // counts left one thread 2.8 times the other's work, docs/performance.md). With the
-        // ledger, runs of equal counts of all the spheres, as its sums are per share and must not
-        // follow the engaged flags or the marks, which a checkpoint does not carry.
-        const std::uint32_t* listed = Ledger ? nullptr : near_list_.data();  // item k is sphere listed[k]
+        // Without the ledger the threads take the marked spheres (near_list_) of their runs;
+        // before the pairs are shared, runs of the marked spheres of about equal work, each wall
+        // contact a sphere had last step weighing wall_acting_cost (the pour puts the floor's
+        // spheres first: equal counts left one thread 2.8 times the other's work,
+        // docs/performance.md). With the ledger, all the spheres: its sums are per share and must
+        // not follow the engaged flags or the marks, which a checkpoint does not carry.
+        listed_ = Ledger ? nullptr : near_list_.data();  // item k is sphere listed_[k]
         const std::size_t items = Ledger ? p.size() : near_list_.size();
         const int parts = static_cast<long>(items * walls.size()) > parallel_threshold ? given : 1;
-        if (!Ledger && sphere_shares.size() == static_cast<std::size_t>(parts) + 1) {
-            split_.resize(sphere_shares.size());
+        follows_runs_ = sphere_runs.size() == static_cast<std::size_t>(parts) + 1;
+        if (follows_runs_) {
+            split_.resize(sphere_runs.size());
             for (std::size_t t = 0; t < split_.size(); ++t)
-                split_[t] = static_cast<std::size_t>(std::lower_bound(near_list_.begin(), near_list_.end(), sphere_shares[t]) - near_list_.begin());
+                split_[t] = Ledger ? sphere_runs[t]
+                                   : static_cast<std::size_t>(std::lower_bound(near_list_.begin(), near_list_.end(), sphere_runs[t]) - near_list_.begin());
         } else {
-            split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) { return acting_walls(listed[k]); });
+            split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) { return acting_walls(listed_[k]); });
         }
-        // Scalars each thread keeps in its own registers (shared ones are read through memory).
-#pragma omp parallel num_threads(std::min(parts, omp_get_max_threads())) firstprivate(time, dt, reach, listed)
-        for (int part = omp_get_thread_num(); part < parts; part += omp_get_num_threads()) {
-            Lost lost;
-            double wall_power = 0;  // W, Σ force on a particle · velocity of the wall touching it
-            for (std::size_t k = split_[part]; k < split_[part + 1]; ++k) {
-                const std::size_t i = listed ? listed[k] : k;
-                if (!near_any_[i] || p.fixed[i]) continue;  // a fixed grain may sit in a wall (a floor's half-buried grains)
-                for (std::size_t w = 0; w < walls.size(); ++w) {
-                    if (!near_[w][i]) continue;  // surely out of its reach and holding nothing (refresh_near)
-                    std::uint8_t& engaged = engaged_[w][i];
-                    auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
-                        if (engaged) law.release(state_[w][i], lost), engaged = 0;
-                    };
-                    if (bounds_[w].surely_farther_than(p.position[i], p.radius[i] + reach)) {
-                        out_of_reach();  // as the range check below would
-                        continue;
-                    }
-                    const WallPoint wp = closest_wall_point(walls[w], p.position[i], time);
-                    if (wp.behind) {
-#pragma omp critical
-                        escape = Escape{i, w};
-                        continue;
-                    }
-                    const Vec3 d = p.position[i] - wp.point;
-                    const double dist = d.norm();
-                    if (dist - p.radius[i] > reach) {
-                        out_of_reach();
-                        continue;
-                    }
-                    engaged = 1;
-                    const ContactPair c = contact_geometry(law, p, dt, i, d, dist, wp.velocity, Vec3::Zero(), 0.0, shapes_[i], a_wall);
-                    const ContactForce f = law.force(c, state_[w][i], lost);
-                    p.force[i] += f.on_i;
-                    p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
-                    if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
-                }
-            }
-            ledger.add(part, lost, wall_power);
-        }
-        return escape;
+        return parts;
     }
+    // Whether prepare()'s runs are the pair loop's runs of spheres.
+    bool follows_sphere_runs() const { return follows_runs_; }
+
+    // Which of a run's spheres add_run_forces takes: all, or those off / on the slabs' faces.
+    enum class Take { all, off_faces, on_faces };
+
+    // Adds the wall forces and torques of run `part`'s spheres (in `take`, where `faces` lists
+    // the faces' spheres of the run, ascending), each sphere's walls in wall order; `lost` and
+    // `wall_power` (W, Σ force on a sphere · velocity of the wall touching it) get the run's
+    // losses. A sphere found behind a wall is kept for escape().
+    void add_run_forces(int part, Particles& p, const Law& law, const std::vector<Wall>& walls, double time, double dt,
+                        Lost& lost, double& wall_power, Take take = Take::all, std::span<const std::uint32_t> faces = {}) {
+        const double reach = law.range();
+        auto sphere_forces = [&](std::size_t i) {
+            if (!near_any_[i] || p.fixed[i]) return;  // a fixed grain may sit in a wall (a floor's half-buried grains)
+            for (std::size_t w = 0; w < walls.size(); ++w) {
+                if (!near_[w][i]) continue;  // surely out of its reach and holding nothing (refresh_near)
+                std::uint8_t& engaged = engaged_[w][i];
+                auto out_of_reach = [&] {  // its springs let go (a state without history has nothing to release)
+                    if (engaged) law.release(state_[w][i], lost), engaged = 0;
+                };
+                if (bounds_[w].surely_farther_than(p.position[i], p.radius[i] + reach)) {
+                    out_of_reach();  // as the range check below would
+                    continue;
+                }
+                const WallPoint wp = closest_wall_point(walls[w], p.position[i], time);
+                if (wp.behind) {
+#pragma omp critical
+                    escape_ = Escape{i, w};
+                    continue;
+                }
+                const Vec3 d = p.position[i] - wp.point;
+                const double dist = d.norm();
+                if (dist - p.radius[i] > reach) {
+                    out_of_reach();
+                    continue;
+                }
+                engaged = 1;
+                const ContactPair c = contact_geometry(law, p, dt, i, d, dist, wp.velocity, Vec3::Zero(), 0.0, shapes_[i], a_wall);
+                const ContactForce f = law.force(c, state_[w][i], lost);
+                p.force[i] += f.on_i;
+                p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
+                if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
+            }
+        };
+        if (take == Take::on_faces) {
+            for (const std::uint32_t i : faces) sphere_forces(i);
+            return;
+        }
+        auto face = faces.begin();  // the next face at or after the sphere (both ascending)
+        for (std::size_t k = split_[static_cast<std::size_t>(part)]; k < split_[static_cast<std::size_t>(part) + 1]; ++k) {
+            const std::size_t i = listed_ ? listed_[k] : k;
+            if (take == Take::off_faces) {
+                while (face != faces.end() && *face < i) ++face;
+                if (face != faces.end() && *face == i) continue;
+            }
+            sphere_forces(i);
+        }
+    }
+
+    // The sphere and wall of an escape the last step found (the caller stops the run).
+    const std::optional<Escape>& escape() const { return escape_; }
 
     // What particle i's walls cost a step, in listed pairs' tests (work_split.hpp), as of the
     // last step: its checks when it is marked near a wall, and its acting contacts.
@@ -211,11 +234,14 @@ private:
         near_any_.assign(p.size(), 0);
         near_list_.clear();
         near_.resize(walls.size());
-        for (std::size_t w = 0; w < walls.size(); ++w) {
-            const WallBound bound(walls[w], time);
-            near_[w].resize(p.size());
-            for (std::size_t i = 0; i < p.size(); ++i) {
-                near_[w][i] = engaged_[w][i] || !bound.surely_farther_than(from[i], p.radius[i] + reach + 2 * skin);
+        std::vector<WallBound> bounds;
+        for (std::size_t w = 0; w < walls.size(); ++w) bounds.emplace_back(walls[w], time), near_[w].resize(p.size());
+        const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static) if (n * static_cast<long>(walls.size()) > parallel_threshold)
+        for (long k = 0; k < n; ++k) {
+            const auto i = static_cast<std::size_t>(k);
+            for (std::size_t w = 0; w < walls.size(); ++w) {
+                near_[w][i] = engaged_[w][i] || !bounds[w].surely_farther_than(from[i], p.radius[i] + reach + 2 * skin);
                 near_any_[i] |= near_[w][i];
             }
         }
@@ -228,7 +254,10 @@ private:
     std::vector<std::vector<std::uint8_t>> engaged_;  // per wall, per particle: 0 when its state is surely zero
     std::vector<PairShape> shapes_;                   // per particle, against any wall
     std::vector<WallBound> bounds_;                   // this step's, one per wall
-    std::vector<std::size_t> split_;                  // each share's run of items this step (add_forces)
+    std::vector<std::size_t> split_;                  // each run's items this step (prepare)
+    const std::uint32_t* listed_ = nullptr;           // item k is sphere listed_[k] (null: sphere k)
+    bool follows_runs_ = false;                       // the runs are the pair loop's (prepare)
+    std::optional<Escape> escape_;                    // found this step (add_run_forces)
     std::vector<std::vector<std::uint8_t>> near_;     // per wall, per particle: 1 when it may touch (refresh_near)
     std::vector<std::uint8_t> near_any_;              // per particle: 1 when it may touch some wall
     std::vector<std::uint32_t> near_list_;            // those particles, ascending
