@@ -12,7 +12,7 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
     }
     ++window_steps_;
     const double elapsed = std::chrono::duration<double>(now - window_start_).count();
-    if (window_steps_ < 20 || elapsed < 0.2) return;
+    if (window_steps_ < 20 || elapsed < (stage_ == Stage::probe ? probe_window_s : window_s)) return;
     const bool all = current_ == most_;
     const double per_step = elapsed / static_cast<double>(window_steps_);
     ++windows_[all];
