@@ -254,7 +254,10 @@ private:
         if (parts == 1) return pass(runs[0], runs[1]);
         std::vector<Result> out(static_cast<std::size_t>(parts));
 #pragma omp parallel for schedule(static, 1) num_threads(std::min(parts, omp_get_max_threads()))
-        for (int part = 0; part < parts; ++part) out[static_cast<std::size_t>(part)] = pass(runs[static_cast<std::size_t>(part)], runs[static_cast<std::size_t>(part) + 1]);
+        for (int part = 0; part < parts; ++part) {
+            const auto t = static_cast<std::size_t>(part);
+            out[t] = pass(runs[t], runs[t + 1]);
+        }
         for (int part = 1; part < parts; ++part) out[0] += out[static_cast<std::size_t>(part)];
         return out[0];
     }
@@ -290,7 +293,7 @@ private:
         pair_contacts_.renumber(new_index);
     }
 
-    enum class AfterForces { nothing, half_kick };  // what compute_forces does next: the step's last half kick
+    enum class AfterForces { nothing, half_kick };  // what compute_forces does after the forces
 
     // The step's forces in one parallel region: each thread sets gravity on its run of spheres,
     // runs its share of the pairs and the walls of its spheres off the slabs' faces, times that
@@ -300,9 +303,10 @@ private:
     // lets a thread's pairs and walls together balance the other's (pairs and walls apart left
     // each phase waiting on its own, docs/performance.md). When the walls' runs are not the
     // pairs' (too few pairs or walls to share), all the walls follow the gathers. Then each
-    // thread sums its spheres' forces and torques (NaN or inf anywhere makes a sum non-finite),
-    // and, `then` the half kick, once every sum is finite and no sphere escaped, gives its spheres the
-    // step's last half kick; otherwise the step stops here, naming the cause.
+    // thread sums its spheres' forces and torques (NaN or inf anywhere makes a sum non-finite)
+    // and, with `then` half_kick, once every sum is finite and no sphere escaped (a second
+    // barrier), gives its spheres the step's last half kick; otherwise the step stops here,
+    // naming the cause.
     void compute_forces(AfterForces then = AfterForces::nothing) {
         ledger_.begin_step(given_threads_);
         const int pair_parts = pair_contacts_.share(p_, given_threads_, [&](std::size_t i) { return wall_contacts_.work_of(i); });

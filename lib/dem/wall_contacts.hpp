@@ -76,9 +76,10 @@ public:
         follows_runs_ = sphere_runs.size() == static_cast<std::size_t>(parts) + 1;
         if (follows_runs_) {
             split_.resize(sphere_runs.size());
-            for (std::size_t t = 0; t < split_.size(); ++t)
-                split_[t] = Ledger ? sphere_runs[t]
-                                   : static_cast<std::size_t>(std::lower_bound(near_list_.begin(), near_list_.end(), sphere_runs[t]) - near_list_.begin());
+            for (std::size_t t = 0; t < split_.size(); ++t) {
+                const auto first_marked = std::lower_bound(near_list_.begin(), near_list_.end(), sphere_runs[t]);
+                split_[t] = Ledger ? sphere_runs[t] : static_cast<std::size_t>(first_marked - near_list_.begin());
+            }
         } else {
             split_by_work(split_, items, parts, Ledger ? 0 : wall_acting_cost, [&](std::size_t k) { return acting_walls(listed_[k]); });
         }
