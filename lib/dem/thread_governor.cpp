@@ -12,7 +12,11 @@ void ThreadGovernor::stepped(std::chrono::steady_clock::time_point now) {
     }
     ++window_steps_;
     const double elapsed = std::chrono::duration<double>(now - window_start_).count();
-    if (window_steps_ < 20 || elapsed < (stage_ == Stage::probe ? probe_window_s : window_s)) return;
+    // A probe on one thread is short (on a quiet machine every probe is one); a probe of all
+    // threads, from one, lasts a full window: a lucky short window under contention would bring
+    // back the threads that wait for windows on end.
+    const bool short_probe = stage_ == Stage::probe && current_ == 1;
+    if (window_steps_ < 20 || elapsed < (short_probe ? probe_window_s : window_s)) return;
     const bool all = current_ == most_;
     const double per_step = elapsed / static_cast<double>(window_steps_);
     ++windows_[all];

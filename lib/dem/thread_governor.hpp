@@ -2,10 +2,11 @@
 // another job holds a core, threads that wait for each other at every step's barriers can run many
 // times slower than one thread (docs/performance.md: 23 s quiet, 182 s with one core busy). The
 // governor times windows of steps (at least 0.2 s and 20 steps) in the mode it chose, and now and
-// then, or at once when a window runs 1.5 times slower than the last, times one shorter window
-// (0.05 s) in the other mode, then one more in its own, and keeps one thread only when it was
-// 15 % faster than all threads (probe against the mean of the windows around it: a cost that
-// drifts over a run cancels). It starts on all threads and probes after its first window.
+// then, or at once when a window runs 1.5 times slower than the last, times one window in the
+// other mode (a shorter one, 0.05 s, on one thread), then one more in its own, and keeps one
+// thread only when it was 15 % faster than all threads (probe against the mean of the windows
+// around it: a cost that drifts over a run cancels). It starts on all threads and probes after
+// its first window.
 // How often: having chosen one thread it probes again after 2 windows, then 4, 8, … up to
 // `probe_every` while one thread keeps winning (on a shared machine a window's noise can pass for
 // contention, and a wrong choice then costs a few windows); on all threads after 12 windows, then
@@ -25,9 +26,9 @@ public:
     static constexpr int probe_every = 24;   // windows between probes, on one thread at most
     static constexpr int longest_hold = 96;  // on all threads at most
     static constexpr double one_thread_margin = 0.85;  // one thread's time over all threads' to choose it
-    // A window lasts at least 20 steps and this long, s; a probe's window (in the mode not chosen)
-    // a quarter of it: on a quiet machine each probe runs on one thread, and the modes' times
-    // differ by far more than the margin (1.7x quiet, 2-8x contended, docs/performance.md).
+    // A window lasts at least 20 steps and this long, s; a probe's window on one thread a quarter
+    // of it: on a quiet machine each probe runs on one thread, and the modes' times differ by far
+    // more than the margin (1.7x quiet, 2-8x contended, docs/performance.md).
     static constexpr double window_s = 0.2, probe_window_s = 0.05;
 
     // threads: what the run was given; 1 turns the governor off.
