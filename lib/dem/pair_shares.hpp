@@ -81,7 +81,7 @@ struct NoSphereWork {
 // takes, simulation.hpp); the slabs cut `axis` (0 x, 1 y, 2 z; -1: the longest side of the box
 // around the pairs' first spheres) into `parts` of about equal weight, at a resolution of 1/1024
 // of the box's side. costs (optional): the last draw's slabs with their measured seconds, which
-// correct the weights (SlabCosts::factor_at); replaced by this draw's slabs, their seconds zero.
+// correct the weights (SlabCosts::factors); replaced by this draw's slabs, their seconds zero.
 template <class Pairs, class Weight, class SphereWork = NoSphereWork>
 std::vector<std::uint8_t> slab_owner(const Pairs& pairs, const Particles& p, int parts, int axis, Weight weight,
                                      SphereWork sphere_work = {}, SlabCosts* costs = nullptr) {
