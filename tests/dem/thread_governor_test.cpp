@@ -4,6 +4,7 @@
 // bounds a hand count gives from the probe schedule (thread_governor.hpp).
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 
 #include "dem/thread_governor.hpp"
@@ -102,4 +103,25 @@ TEST_CASE("Thread governor: one thread given, nothing to govern", "[dem][threads
     CHECK_FALSE(g.active());
     g.stepped(Clock::now());
     CHECK(g.threads() == 1);
+}
+
+TEST_CASE("Thread governor: contention that comes and goes in bursts keeps one thread", "[dem][threads]") {
+    // The other job leaves the core free for 60 ms of every 250 ms (its time slices): then a step
+    // on two threads takes 1 ms, otherwise 8.8 ms; one thread always takes 1.1 ms. A full window
+    // on two threads (0.2 s) averages 2.6 ms a step or more, so one thread wins; a window of 0.05 s
+    // that falls inside a free burst sees 1 ms and would bring back the threads, which then wait
+    // through many slow windows before the next probe. Here 1.03x the one-thread time; with a
+    // probe of all threads as short as one of one thread, 1.44x.
+    ThreadGovernor g(2);
+    auto now = Clock::time_point{};
+    double wall = 0;
+    const int steps = 100000;
+    for (int k = 0; k < steps; ++k) {
+        const double t = std::fmod(wall, 0.25);
+        const double cost = g.threads() == 1 ? 1.1e-3 : t < 0.06 ? 1.0e-3 : 8.8e-3;
+        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
+        wall += cost;
+        g.stepped(now);
+    }
+    CHECK(wall < 1.2 * steps * 1.1e-3);
 }
