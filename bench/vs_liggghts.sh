@@ -9,7 +9,9 @@
 # demscale time) and the median per thread count, and both final piles. Each run's line also logs
 # the cross-core cost of a cache line just before it (link_ns, `demscale bench --core-link`).
 # Usage: [ROUNDS=2] [BUSY_LIMIT=0.3] bench/vs_liggghts.sh [SCENE]
-# (default data/scenes/kantro_dry.toml; several minutes per round). Last line: ratio_dry_1thread=X.XX
+# (default data/scenes/kantro_dry.toml, 4 800 spheres: several minutes per round;
+# data/scenes/kantro_dry_large.toml, 16 600 spheres: about 16 minutes per round).
+# Last line: ratio_dry_1thread=X.XX
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=${1:-data/scenes/kantro_dry.toml}

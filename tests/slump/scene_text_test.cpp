@@ -64,7 +64,7 @@ void require_same_run(const SlumpScene& a, const SlumpScene& b) {
 
 TEST_CASE("Scene text: every shipped scene and its variants read back as the same run", "[slump][scene_text]") {
     std::vector<SlumpScene> scenes;
-    for (const char* name : {"kantro_wet.toml", "kantro_dry.toml", "small_wet.toml", "repose_rough.toml"}) {
+    for (const char* name : {"kantro_wet.toml", "kantro_dry.toml", "kantro_dry_large.toml", "small_wet.toml", "repose_rough.toml"}) {
         const auto s = shipped(name);
         scenes.push_back(s);
         scenes.push_back(coarse_grained(s, {2.74, 3, {}}));  // S_f and k give numbers like 0.0001*2.74^3
@@ -122,4 +122,20 @@ TEST_CASE("Scene text: an altered, foreign or malformed text is refused, naming 
     const auto back = scene_from_text(reseeded, "x.scene");
     CHECK(back.seed == 7u);
     CHECK(scene_key(back) != scene_key(shipped("small_wet.toml")));
+}
+
+TEST_CASE("Scene text: the benchmarks' larger scene is kantro_dry in a cone 1.5 times as large", "[slump][scene_text]") {
+    // bench/vs_liggghts.sh's larger scene must differ from the reference dry scene only in size,
+    // or its ratios would not describe the same run grown: the cone and the fill height 1.5x,
+    // the lift 8.5 mm past the cone's top (1.5 x 57 + 8.5 = 94 mm), everything else equal.
+    const SlumpScene small = shipped("kantro_dry.toml");
+    SlumpScene large = shipped("kantro_dry_large.toml");
+    CHECK(large.bottom_diameter_m == Approx(1.5 * small.bottom_diameter_m).epsilon(1e-12));
+    CHECK(large.top_diameter_m == Approx(1.5 * small.top_diameter_m).epsilon(1e-12));
+    CHECK(large.height_m == Approx(1.5 * small.height_m).epsilon(1e-12));
+    CHECK(large.fill_height_m == Approx(1.5 * small.fill_height_m).epsilon(1e-12));
+    CHECK(large.lift_height_m == Approx(0.094).epsilon(1e-12));
+    large.bottom_diameter_m = small.bottom_diameter_m, large.top_diameter_m = small.top_diameter_m;
+    large.height_m = small.height_m, large.fill_height_m = small.fill_height_m, large.lift_height_m = small.lift_height_m;
+    require_same_run(large, small);
 }
