@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -134,7 +135,7 @@ std::vector<std::uint8_t> slab_owner(const Pairs& pairs, const Particles& p, int
             costs->weight[slab[b]] += load[b];
             if (costs->cuts.size() < slab[b]) costs->cuts.resize(slab[b], edge(b));  // an empty slab's cuts coincide
         }
-        costs->cuts.resize(static_cast<std::size_t>(parts) - 1, hi[axis] + 1.0);
+        costs->cuts.resize(static_cast<std::size_t>(parts) - 1, std::numeric_limits<double>::infinity());  // slabs no bin reached
     }
     return owner;
 }
