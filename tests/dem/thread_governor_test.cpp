@@ -13,25 +13,31 @@ using namespace demscale::dem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-// Runs `steps` steps where a step costs one_s on one thread and all_s on all; returns the wall time
-// and the share of steps run on all threads. switch_at: from that step on, all_s becomes switched_s.
+// Runs `steps` steps under a governor of two threads, step k costing cost(k, all, wall) s (all: on
+// all threads; wall: the time so far, s); returns the wall time and the share of steps run on all
+// threads.
 struct Outcome {
     double wall = 0, share_all = 0;
 };
-Outcome run(int steps, double one_s, double all_s, int switch_at = -1, double switched_s = 0) {
+template <class Cost>
+Outcome run(int steps, Cost cost) {
     ThreadGovernor g(2);
     auto now = Clock::time_point{};
     Outcome o;
     int on_all = 0;
     for (int k = 0; k < steps; ++k) {
         const bool all = g.threads() == 2;
-        const double cost = all ? (switch_at >= 0 && k >= switch_at ? switched_s : all_s) : one_s;
-        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
-        o.wall += cost, on_all += all;
+        const double took = cost(k, all, o.wall);
+        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(took));
+        o.wall += took, on_all += all;
         g.stepped(now);
     }
     o.share_all = double(on_all) / steps;
     return o;
+}
+// A step costs one_s on one thread and all_s on all; from step switch_at on, all_s becomes switched_s.
+Outcome run(int steps, double one_s, double all_s, int switch_at = -1, double switched_s = 0) {
+    return run(steps, [&](int k, bool all, double) { return all ? (switch_at >= 0 && k >= switch_at ? switched_s : all_s) : one_s; });
 }
 }  // namespace
 
@@ -62,40 +68,24 @@ TEST_CASE("Thread governor: a noisy quiet machine keeps all threads nearly all t
     // factor, uniform in [0.7, 1.3] (the spread seen between runs on these machines); all threads
     // stay 1.4 times faster at every moment. A probe can then see one thread up to 1.3/0.7 ≈ 1.9x
     // faster by chance and choose it; it must not keep it for long.
-    ThreadGovernor g(2);
-    auto now = Clock::time_point{};
     std::uint32_t state = 12345;  // a fixed linear congruential stream (portable)
     double factor = 1;
-    int on_all = 0;
-    const int steps = 200000;
-    for (int k = 0; k < steps; ++k) {
+    const auto o = run(200000, [&](int k, bool all, double) {
         if (k % 150 == 0) state = state * 1664525u + 1013904223u, factor = 0.7 + 0.6 * (state >> 8) / double(1u << 24);
-        const double cost = (g.threads() == 2 ? 1.0e-3 : 1.4e-3) * factor;
-        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
-        on_all += g.threads() == 2;
-        g.stepped(now);
-    }
-    // 0.990 here (0.970 probing every 24 windows on all threads; 0.952 with a 5 % margin and 24
-    // windows on one thread).
-    CHECK(double(on_all) / steps > 0.96);
+        return (all ? 1.0e-3 : 1.4e-3) * factor;
+    });
+    // 0.998 here (0.990 with a probe on one thread as long as other windows; 0.970 probing every
+    // 24 windows on all threads; 0.952 with a 5 % margin and 24 windows on one thread).
+    CHECK(o.share_all > 0.96);
 }
 
 TEST_CASE("Thread governor: a cost that drifts over the run is not taken for contention", "[dem][threads]") {
     // The step's cost falls by half over the run on both modes; all threads stay 1.4 times faster
     // at every moment. Comparing a probe with the window before it alone would favour whichever
     // mode was timed later.
-    ThreadGovernor g(2);
-    auto now = Clock::time_point{};
-    int on_all = 0;
     const int steps = 200000;
-    for (int k = 0; k < steps; ++k) {
-        const double scale = 1.0 - 0.5 * k / steps;
-        const double cost = (g.threads() == 2 ? 1.0e-3 : 1.4e-3) * scale;
-        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
-        on_all += g.threads() == 2;
-        g.stepped(now);
-    }
-    CHECK(double(on_all) / steps > 0.95);
+    const auto o = run(steps, [&](int k, bool all, double) { return (all ? 1.0e-3 : 1.4e-3) * (1.0 - 0.5 * k / steps); });
+    CHECK(o.share_all > 0.95);
 }
 
 TEST_CASE("Thread governor: one thread given, nothing to govern", "[dem][threads]") {
@@ -112,16 +102,7 @@ TEST_CASE("Thread governor: contention that comes and goes in bursts keeps one t
     // that falls inside a free burst sees 1 ms and would bring back the threads, which then wait
     // through many slow windows before the next probe. Here 1.03x the one-thread time; with a
     // probe of all threads as short as one of one thread, 1.44x.
-    ThreadGovernor g(2);
-    auto now = Clock::time_point{};
-    double wall = 0;
     const int steps = 100000;
-    for (int k = 0; k < steps; ++k) {
-        const double t = std::fmod(wall, 0.25);
-        const double cost = g.threads() == 1 ? 1.1e-3 : t < 0.06 ? 1.0e-3 : 8.8e-3;
-        now += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cost));
-        wall += cost;
-        g.stepped(now);
-    }
-    CHECK(wall < 1.2 * steps * 1.1e-3);
+    const auto o = run(steps, [](int, bool all, double wall) { return !all ? 1.1e-3 : std::fmod(wall, 0.25) < 0.06 ? 1.0e-3 : 8.8e-3; });
+    CHECK(o.wall < 1.2 * steps * 1.1e-3);
 }
