@@ -19,8 +19,10 @@ scene=${1:-data/scenes/kantro_dry.toml}
 work=$(mktemp -d)
 spinner=
 trap '[ -n "$spinner" ] && kill "$spinner" 2>/dev/null; rm -rf "$work"' EXIT
-if [ -n "${SPREAD:-}" ]; then
-  sed "s/^spread_time_s = .*/spread_time_s = $SPREAD/" "$scene" >"$work/scene.toml"
+if [ -n "${SPREAD:-}" ]; then  # the scene's line, or a new one in its [run] table, or a new [run] table
+  if grep -q '^spread_time_s *=' "$scene"; then sed "s/^spread_time_s *=.*/spread_time_s = $SPREAD/" "$scene"
+  elif grep -q '^\[run\]' "$scene"; then sed "s/^\[run\].*/&\nspread_time_s = $SPREAD/" "$scene"
+  else cat "$scene"; printf '\n[run]\nspread_time_s = %s\n' "$SPREAD"; fi >"$work/scene.toml"
   scene="$work/scene.toml"
 fi
 echo "scene: $scene; settling once ..." >&2
