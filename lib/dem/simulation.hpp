@@ -64,12 +64,17 @@ public:
         const bool built = neighbors_.built_for(p_);
         const Drifted drifted = over_spheres([&](std::size_t begin, std::size_t end) {
             half_kick(begin, end);
-            Drifted run;
+            // Locals, not the returned struct: Eigen's stores may alias any double in memory, so
+            // a sum kept there went through memory at every sphere (a chain of store and load).
+            double sum = 0;
+            NeighborList::Shifts shifts;
+            Vec3* const x = p_.position.data();
+            const Vec3* const v = p_.velocity.data();
             for (std::size_t i = begin; i < end; ++i) {
-                p_.position[i] += dt_ * p_.velocity[i], run.sum += p_.position[i].sum();
-                if (built) run.shifts.keep(neighbors_.squared_shift(p_, i));
+                x[i] += dt_ * v[i], sum += x[i].sum();
+                if (built) shifts.keep(neighbors_.squared_shift(p_, i));
             }
-            return run;
+            return Drifted{sum, shifts};
         });
         if (!std::isfinite(drifted.sum))
             for (std::size_t i = 0; i < p_.size(); ++i)
@@ -216,11 +221,37 @@ private:
 
     // The half kick of spheres [begin, end).
     void half_kick(std::size_t begin, std::size_t end) {
+        // Local pointers: Eigen's stores may alias any memory, the members would be read again
+        // after each one.
+        Vec3* const v = p_.velocity.data();
+        Vec3* const w = p_.angular_velocity.data();
+        const Vec3* const f = p_.force.data();
+        const Vec3* const t = p_.torque.data();
+        const Kick* const kick = kick_.data();
+        const auto* const fixed = p_.fixed.data();
         for (std::size_t i = begin; i < end; ++i) {
-            if (p_.fixed[i]) continue;
-            p_.velocity[i] += kick_[i].translation * p_.force[i];
-            p_.angular_velocity[i] += kick_[i].rotation * p_.torque[i];
+            if (fixed[i]) continue;
+            v[i] += kick[i].translation * f[i];
+            w[i] += kick[i].rotation * t[i];
         }
+    }
+
+    // Spheres [begin, end) get their weight as force and no torque, the start of the step's sums.
+    void set_gravity(std::size_t begin, std::size_t end) {
+        Vec3* const f = p_.force.data();  // local pointers: see half_kick
+        Vec3* const t = p_.torque.data();
+        const double* const m = p_.mass.data();
+        const Vec3 g = gravity_;
+        for (std::size_t i = begin; i < end; ++i) f[i] = m[i] * g, t[i] = Vec3::Zero();
+    }
+
+    // Σ of the forces and torques of spheres [begin, end): non-finite when any of them is.
+    double checked_sum(std::size_t begin, std::size_t end) const {
+        const Vec3* const f = p_.force.data();
+        const Vec3* const t = p_.torque.data();
+        double sum = 0;
+        for (std::size_t i = begin; i < end; ++i) sum += f[i].sum() + t[i].sum();
+        return sum;
     }
 
     struct Drifted {  // what the drift of some spheres found
@@ -324,8 +355,7 @@ private:
             auto mine = [&](int part) -> PartSums& { return part_sums_[static_cast<std::size_t>(part)]; };
             for (int part = thread; part < pair_parts; part += threads) {
                 const auto start = std::chrono::steady_clock::now();
-                for (std::size_t i = pair_runs[static_cast<std::size_t>(part)]; i < pair_runs[static_cast<std::size_t>(part) + 1]; ++i)
-                    p_.force[i] = p_.mass[i] * gravity_, p_.torque[i] = Vec3::Zero();
+                set_gravity(pair_runs[static_cast<std::size_t>(part)], pair_runs[static_cast<std::size_t>(part) + 1]);
                 pair_contacts_.add_share_forces(part, p_, law_, dt_, mine(part).pairs);
                 if (with_pairs)
                     wall_contacts_.add_run_forces(part, p_, law_, walls_, time_, dt_, mine(part).walls, mine(part).wall_power,
@@ -346,10 +376,7 @@ private:
 #pragma omp barrier
             }
             for (int part = thread; part < run_parts; part += threads) {
-                double sum = 0;
-                for (std::size_t i = runs[static_cast<std::size_t>(part)]; i < runs[static_cast<std::size_t>(part) + 1]; ++i)
-                    sum += p_.force[i].sum() + p_.torque[i].sum();
-                mine(part).checked = sum;
+                mine(part).checked = checked_sum(runs[static_cast<std::size_t>(part)], runs[static_cast<std::size_t>(part) + 1]);
             }
             if (then == AfterForces::half_kick) {
 #pragma omp barrier
