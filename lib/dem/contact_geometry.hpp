@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "dem/contact_pair.hpp"
+#include "dem/cross.hpp"
 #include "dem/particles.hpp"
 
 namespace demscale::dem {
@@ -63,7 +64,7 @@ DEMSCALE_HOT ContactPair contact_geometry(const Law& law, const Particles& p, do
     // Contact point at the middle of the overlap (of the gap, for a viscous bridge); lever arms
     // from each centre.
     const double li = ri - 0.5 * c.overlap, lj = rj - 0.5 * c.overlap;
-    c.v_rel = p.velocity[i] + p.angular_velocity[i].cross(-li * c.normal) - (vj + wj.cross(lj * c.normal));
+    c.v_rel = p.velocity[i] + cross(p.angular_velocity[i], -li * c.normal) - (vj + cross(wj, lj * c.normal));
     c.v_normal = c.v_rel.dot(c.normal);
     c.v_tangential = c.v_rel - c.v_normal * c.normal;
     c.w_rel = p.angular_velocity[i] - wj;

@@ -19,6 +19,7 @@
 
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
+#include "dem/cross.hpp"
 #include "dem/energy_ledger.hpp"
 #include "dem/pair_shares.hpp"
 #include "dem/particles.hpp"
@@ -267,8 +268,8 @@ private:
         out.force_i = f.on_i;
         if (c.overlap <= 0 && !law.needs_gap_velocity()) return Acts::central;  // gap rounded to 0: the same central pull
         const double li = p.radius[i] - 0.5 * c.overlap, lj = p.radius[j] - 0.5 * c.overlap;
-        out.torque_i = (-li * c.normal).cross(f.tangential) + f.rolling_torque;
-        out.torque_j = (lj * c.normal).cross(-f.tangential) - f.rolling_torque;
+        out.torque_i = cross(-li * c.normal, f.tangential) + f.rolling_torque;
+        out.torque_j = cross(lj * c.normal, -f.tangential) - f.rolling_torque;
         return Acts::contact;
     }
 

@@ -15,6 +15,7 @@
 
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
+#include "dem/cross.hpp"
 #include "dem/energy_ledger.hpp"
 #include "dem/neighbor_list.hpp"
 #include "dem/particles.hpp"
@@ -126,7 +127,7 @@ public:
                 const ContactPair c = contact_geometry(law, p, dt, i, d, dist, wp.velocity, Vec3::Zero(), 0.0, shapes_[i], a_wall);
                 const ContactForce f = law.force(c, state_[w][i], lost);
                 p.force[i] += f.on_i;
-                p.torque[i] += (-(p.radius[i] - 0.5 * c.overlap) * c.normal).cross(f.tangential) + f.rolling_torque;
+                p.torque[i] += cross(-(p.radius[i] - 0.5 * c.overlap) * c.normal, f.tangential) + f.rolling_torque;
                 if constexpr (Ledger) wall_power += f.on_i.dot(wp.velocity);
             }
         };
