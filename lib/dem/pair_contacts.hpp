@@ -7,6 +7,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <omp.h>
@@ -82,26 +84,31 @@ public:
     // Share `part`'s pairs, in pair order: each adds its force and torques at once to the spheres
     // only this share touches; the others' go to the buffer (a pair that does not act holds a zero
     // result there, listed_result: adding ±0 to a sum that starts at +0 or non-zero leaves it as
-    // it was, so the gather needs no branch). `lost`: what the share's pairs dissipated.
+    // it was, so the gather needs no branch). `lost`: what the share's pairs dissipated. In blocks:
+    // first the separations of the block's pairs that may act (separations), then their forces:
+    // the square roots of a block do not wait on one another's forces, so the core overlaps them.
     void add_share_forces(int part, Particles& p, const Law& law, double dt, Lost& lost) {
         const double reach = law.range();
+        std::array<Separation, separations_per_block> near;
         for (const auto& [first, end] : shares_.runs[static_cast<std::size_t>(part)])
-            for (std::size_t k = first; k < end; ++k) {
-                PairResult r;
-                const Acts acts = listed_result(p, law, dt, k, reach, lost, r);
-                if (acts == Acts::nothing) continue;
-                const PairIndex q = pairs_[k];
-                const std::uint8_t direct = shares_.direct[k];
-                if (direct & 1) {
-                    p.force[q.i] += r.force_i;
-                    if (acts == Acts::contact) p.torque[q.i] += r.torque_i;
+            for (std::size_t from = first; from < end; from += separations_per_block)
+                for (const Separation& at : separations(p, from, std::min(end, from + separations_per_block), near)) {
+                    const std::size_t k = at.pair;
+                    PairResult r;
+                    const Acts acts = listed_result(p, law, dt, k, at, reach, lost, r);
+                    if (acts == Acts::nothing) continue;
+                    const PairIndex q = pairs_[k];
+                    const std::uint8_t direct = shares_.direct[k];
+                    if (direct & 1) {
+                        p.force[q.i] += r.force_i;
+                        if (acts == Acts::contact) p.torque[q.i] += r.torque_i;
+                    }
+                    if (direct & 2) {
+                        p.force[q.j] -= r.force_i;
+                        if (acts == Acts::contact) p.torque[q.j] += r.torque_j;
+                    }
+                    if (direct != PairShares::both_direct) results_[k] = r;
                 }
-                if (direct & 2) {
-                    p.force[q.j] -= r.force_i;
-                    if (acts == Acts::contact) p.torque[q.j] += r.torque_j;
-                }
-                if (direct != PairShares::both_direct) results_[k] = r;
-            }
     }
 
     // The spheres on a slab's face in share `part`'s run of spheres (sphere_shares), once every
@@ -176,7 +183,8 @@ public:
             LawState copy = states_[incidence_[e] / 2];
             Lost none;  // booked into nothing kept
             PairResult r;
-            pair_result(p, law, dt, q.i, q.j, shapes_[incidence_[e] / 2], copy, law.range(), none, r);
+            const Vec3 d = p.position[q.i] - p.position[q.j];
+            pair_result(p, law, dt, q.i, q.j, d, d.norm(), shapes_[incidence_[e] / 2], copy, law.range(), none, r);
             if (r.force_i.allFinite() && r.torque_i.allFinite() && r.torque_j.allFinite()) continue;
             const std::size_t other = q.i == i ? q.j : q.i;
             const double gap = (p.position[i] - p.position[other]).norm() - p.radius[i] - p.radius[other];
@@ -244,13 +252,12 @@ private:
     enum class Acts { nothing, central, contact };
 
     // What listed pair (i, j) of that shape, with history s, contributes now, into out (left zero
-    // where it does not act; a central force leaves the torques zero). A pair that stops acting
-    // has its springs released.
+    // where it does not act; a central force leaves the torques zero), its centres d = x_i − x_j
+    // apart, dist = |d|. A pair that stops acting has its springs released.
     template <class L>
-    DEMSCALE_HOT static Acts pair_result(const Particles& p, const Law& law, double dt, std::size_t i, std::size_t j,
-                                         const PairShape& shape, LawState& s, double reach, L& lost, PairResult& out) {
-        const Vec3 d = p.position[i] - p.position[j];
-        const double dist = d.norm(), gap = dist - p.radius[i] - p.radius[j];
+    DEMSCALE_HOT static Acts pair_result(const Particles& p, const Law& law, double dt, std::size_t i, std::size_t j, const Vec3& d,
+                                         double dist, const PairShape& shape, LawState& s, double reach, L& lost, PairResult& out) {
+        const double gap = dist - p.radius[i] - p.radius[j];
         if (gap > reach || (gap > 0 && !law.acts_across_gap(s))) {
             law.release(s, lost);
             return Acts::nothing;
@@ -298,19 +305,39 @@ private:
         results_.assign(pairs_.size(), PairResult{});  // the spheres that gather changed: zero where a pair does not act
     }
 
-    // pair_result for listed pair k, where a pair without history (engaged_[k] = 0: its state is
-    // zero) that is surely apart is passed over: it would do nothing and keep its zero state, so it
-    // needs no square root and no access to its state. The margin on the squared distance (1e-12
-    // relative) is far above rounding: the decision is pair_result's own.
-    template <class L>
-    DEMSCALE_HOT Acts listed_result(const Particles& p, const Law& law, double dt, std::size_t k, double reach, L& lost,
-                                    PairResult& out) {
-        const std::size_t i = pairs_[k].i, j = pairs_[k].j;
-        if (!engaged_[k]) {
-            const double touch = p.radius[i] + p.radius[j];
-            if ((p.position[i] - p.position[j]).squaredNorm() > touch * touch * (1 + 1e-12)) return Acts::nothing;
+    // A listed pair that may act this step, with its centres' separation d = x_i − x_j (m) and
+    // dist = |d| (m).
+    struct Separation {
+        std::uint32_t pair;
+        double dist;
+        Vec3 d;
+    };
+    static constexpr std::size_t separations_per_block = 32;
+
+    // The separations of listed pairs [from, to) that may act, into `near` (their first ones), in
+    // pair order. A pair without history (engaged_[k] = 0: its state is zero) that is surely apart
+    // is left out: it would do nothing and keep its zero state, so it needs no square root and no
+    // access to its state. The margin on the squared distance (1e-12 relative) is far above
+    // rounding: the decision is pair_result's own.
+    std::span<const Separation> separations(const Particles& p, std::size_t from, std::size_t to,
+                                            std::array<Separation, separations_per_block>& near) const {
+        std::size_t n = 0;
+        for (std::size_t k = from; k < to; ++k) {
+            const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+            const Vec3 d = p.position[i] - p.position[j];
+            const double d2 = d.squaredNorm(), touch = p.radius[i] + p.radius[j];
+            if (!engaged_[k] && d2 > touch * touch * (1 + 1e-12)) continue;
+            near[n++] = {static_cast<std::uint32_t>(k), std::sqrt(d2), d};  // sqrt(d2) is d.norm(), bit for bit
         }
-        const Acts acts = pair_result(p, law, dt, i, j, shapes_[k], states_[k], reach, lost, out);
+        return {near.data(), n};
+    }
+
+    // pair_result for listed pair k, at separation `at` (separations), with its contact history.
+    template <class L>
+    DEMSCALE_HOT Acts listed_result(const Particles& p, const Law& law, double dt, std::size_t k, const Separation& at, double reach,
+                                    L& lost, PairResult& out) {
+        const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+        const Acts acts = pair_result(p, law, dt, i, j, at.d, at.dist, shapes_[k], states_[k], reach, lost, out);
         if (acts == Acts::nothing) results_[k] = PairResult{};  // released: its result zero again, as its state
         engaged_[k] = acts != Acts::nothing;
         return acts;
