@@ -551,3 +551,45 @@ TEST_CASE("Results do not depend on the number of threads, with walls and withou
         CHECK(std::memcmp(one.angular_velocity.data(), q->angular_velocity.data(), one.size() * sizeof(Vec3)) == 0);
     }
 }
+
+TEST_CASE("Every touching pair acts: the engine's forces on a packed cluster are Hertz's summed over all pairs by brute force",
+          "[dem][contact]") {
+    // A jittered cubic lattice 1.9 radii apart: each sphere presses on its nearest neighbours and
+    // lies near the others, so the pair loop's blocks hold both kinds, many blocks over. At rest
+    // with fresh histories only the elastic Hertz force acts: 4/3 E* √R* δ^(3/2) along the line of
+    // centres, E* = E / (2 (1 − ν²)), summed here over all pairs (no neighbour list).
+    Material m;
+    m.youngs_modulus = 5e6;
+    m.poisson_ratio = 0.3;
+    m.friction = 0.5;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> jitter(-0.04e-3, 0.04e-3);
+    const double r = 1e-3, spacing = 1.9e-3;
+    Particles p;
+    for (int x = 0; x < 8; ++x)
+        for (int y = 0; y < 8; ++y)
+            for (int z = 0; z < 6; ++z)
+                p.add(Vec3(x * spacing + jitter(rng), y * spacing + jitter(rng), z * spacing + jitter(rng)), r, 2500);
+    const Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(m), {}, Vec3::Zero(), 1e-7, 0.3e-3);
+    const Particles got = sim.in_input_order();
+    const double e_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
+    std::size_t touching = 0;
+    double largest = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        Vec3 expected = Vec3::Zero();
+        for (std::size_t j = 0; j < p.size(); ++j) {
+            const Vec3 d = p.position[i] - p.position[j];
+            const double overlap = p.radius[i] + p.radius[j] - d.norm();
+            if (j == i || overlap <= 0) continue;
+            const double r_eff = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+            expected += 4.0 / 3.0 * e_star * std::sqrt(r_eff) * std::pow(overlap, 1.5) * d.normalized();
+            touching += i < j;
+        }
+        largest = std::max(largest, expected.norm());
+        INFO("sphere " << i);
+        CHECK((got.force[i] - expected).norm() <= 1e-12 * largest + 1e-9 * expected.norm());
+        CHECK(got.torque[i].norm() <= 1e-12 * largest);
+    }
+    CHECK(touching > 600);  // many blocks of 32 listed pairs, each with touching ones
+    CHECK(largest > 0);
+}
