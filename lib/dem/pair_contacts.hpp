@@ -314,7 +314,7 @@ private:
     };
     static constexpr std::size_t separations_per_block = 32;
 
-    // The separations of listed pairs [from, to) that may act, into `near` (their first ones), in
+    // The separations of listed pairs [from, to) that may act, in the first entries of `near`, in
     // pair order. A pair without history (engaged_[k] = 0: its state is zero) that is surely apart
     // is left out: it would do nothing and keep its zero state, so it needs no square root and no
     // access to its state. The margin on the squared distance (1e-12 relative) is far above
