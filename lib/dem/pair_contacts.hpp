@@ -95,7 +95,7 @@ public:
                 for (const Separation& at : separations(p, from, std::min(end, from + separations_per_block), near)) {
                     const std::size_t k = at.pair;
                     PairResult r;
-                    const Acts acts = listed_result(p, law, dt, k, at, reach, lost, r);
+                    const Acts acts = listed_result(p, law, dt, at, reach, lost, r);
                     if (acts == Acts::nothing) continue;
                     const PairIndex q = pairs_[k];
                     const std::uint8_t direct = shares_.direct[k];
@@ -332,11 +332,11 @@ private:
         return {near.data(), n};
     }
 
-    // pair_result for listed pair k, at separation `at` (separations), with its contact history.
+    // pair_result for the listed pair at separation `at` (separations), with its contact history.
     template <class L>
-    DEMSCALE_HOT Acts listed_result(const Particles& p, const Law& law, double dt, std::size_t k, const Separation& at, double reach,
-                                    L& lost, PairResult& out) {
-        const std::size_t i = pairs_[k].i, j = pairs_[k].j;
+    DEMSCALE_HOT Acts listed_result(const Particles& p, const Law& law, double dt, const Separation& at, double reach, L& lost,
+                                    PairResult& out) {
+        const std::size_t k = at.pair, i = pairs_[k].i, j = pairs_[k].j;
         const Acts acts = pair_result(p, law, dt, i, j, at.d, at.dist, shapes_[k], states_[k], reach, lost, out);
         if (acts == Acts::nothing) results_[k] = PairResult{};  // released: its result zero again, as its state
         engaged_[k] = acts != Acts::nothing;
