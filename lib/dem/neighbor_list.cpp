@@ -5,24 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace demscale::dem {
+#include "dem/buckets.hpp"
 
-namespace {
-// Items 0 … key.size()-1 in ascending key order, equal keys in item order (a counting sort):
-// bucket b's items are order[start[b]] … order[start[b + 1] - 1].
-struct Buckets {
-    std::vector<std::uint32_t> start, order;
-};
-template <class Key>
-Buckets bucket_by(const std::vector<Key>& key, std::size_t buckets) {
-    Buckets out{std::vector<std::uint32_t>(buckets + 1, 0), std::vector<std::uint32_t>(key.size())};
-    for (const Key b : key) ++out.start[b + 1];
-    for (std::size_t b = 0; b < buckets; ++b) out.start[b + 1] += out.start[b];
-    std::vector<std::uint32_t> fill(out.start.begin(), out.start.end() - 1);
-    for (std::size_t i = 0; i < key.size(); ++i) out.order[fill[key[i]]++] = static_cast<std::uint32_t>(i);
-    return out;
-}
-}  // namespace
+namespace demscale::dem {
 
 void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* rank) {
     pairs_.clear();
@@ -42,11 +27,13 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
     auto cell_of = [&](const Vec3& x, int k) { return std::min(dims[k] - 1, static_cast<long>((x[k] - lo[k]) / cell)); };
     // The particles sorted into cells.
     std::vector<std::size_t> index(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto& x = p.position[i];
-        index[i] = static_cast<std::size_t>((cell_of(x, 2) * dims[1] + cell_of(x, 1)) * dims[0] + cell_of(x, 0));
+    const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (count > parallel_threshold)
+    for (long ii = 0; ii < count; ++ii) {
+        const auto& x = p.position[static_cast<std::size_t>(ii)];
+        index[static_cast<std::size_t>(ii)] = static_cast<std::size_t>((cell_of(x, 2) * dims[1] + cell_of(x, 1)) * dims[0] + cell_of(x, 0));
     }
-    const auto [start, order] = bucket_by(index, static_cast<std::size_t>(dims[0] * dims[1] * dims[2]));
+    const auto [start, order] = bucket_by(n, static_cast<std::size_t>(dims[0] * dims[1] * dims[2]), [&](std::size_t i) { return index[i]; });
 
     // Each pair once: sphere i takes the spheres after it in its own cell and every sphere in the
     // 13 cells "after" its cell (half of the 26 around it), so no pair is tested twice; the sort
@@ -55,7 +42,6 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
                                                                 {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
                                                                 {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}}};
     const double gap = skin_;
-    const long count = static_cast<long>(n);
 #pragma omp parallel
     {
         std::vector<std::pair<std::uint32_t, std::uint32_t>> local;
@@ -87,9 +73,7 @@ void NeighborList::build(const Particles& p, const std::vector<std::uint32_t>* r
     }
     // Ascending (i, j), a fixed order whatever the thread count: bucketed by i, then each sphere's
     // few j sorted (a comparison sort of the whole list took a quarter of the build).
-    std::vector<std::uint32_t> first_of(pairs_.size());
-    for (std::size_t k = 0; k < pairs_.size(); ++k) first_of[k] = pairs_[k].first;
-    const Buckets by_first = bucket_by(first_of, n);
+    const Buckets by_first = bucket_by(pairs_.size(), n, [&](std::size_t k) { return pairs_[k].first; });
     std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted(pairs_.size());
     // Each sphere's pairs gathered and sorted apart from the others', on all threads.
 #pragma omp parallel for schedule(static) if (count > parallel_threshold)

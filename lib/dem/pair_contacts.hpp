@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <omp.h>
 #include <optional>
@@ -19,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "dem/buckets.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
 #include "dem/cross.hpp"
@@ -41,25 +43,53 @@ public:
     // bridge forms only at contact, and this keeps it until it ruptures. Both lists are sorted by
     // (i, j), so one merge pass does it, and the acting pairs keep their order (the same bits as a
     // list that reaches the rupture gap).
+    // On all threads: each merges a run of the new list with the old pairs that fall among it,
+    // first counting its pairs, then writing them where the runs before it end.
     void merge(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& near, const Particles& p, const Law& law) {
         std::vector<PairIndex> old;
         std::vector<LawState> old_states;
         std::vector<std::uint8_t> old_engaged;
         old.swap(pairs_), old_states.swap(states_), old_engaged.swap(engaged_);
-        pairs_.reserve(near.size()), states_.reserve(near.size()), engaged_.reserve(near.size());
-        auto add = [&](PairIndex q, const LawState& state, std::uint8_t engaged) {
-            pairs_.push_back(q), states_.push_back(state), engaged_.push_back(engaged);
-        };
-        auto keep_bridged = [&](std::size_t k) {
-            if (law.acts_across_gap(old_states[k])) add(old[k], old_states[k], 1);
-        };
-        std::size_t k = 0;
-        for (const auto& [i, j] : near) {
-            for (; k < old.size() && std::make_pair(old[k].i, old[k].j) < std::make_pair(i, j); ++k) keep_bridged(k);
-            if (k < old.size() && old[k].i == i && old[k].j == j) add(old[k], old_states[k], old_engaged[k]), ++k;
-            else add({i, j}, LawState{}, 0);
+        const auto listed = static_cast<long>(std::max(near.size(), old.size()));
+        const std::size_t runs = listed > parallel_threshold ? static_cast<std::size_t>(omp_get_max_threads()) : 1;
+        auto key = [](const PairIndex& q) { return std::make_pair(q.i, q.j); };
+        // Run r: near[near_at[r], near_at[r + 1]) and the old pairs before near[near_at[r + 1]]
+        // (all the rest for the last run), from the first not before near[near_at[r]].
+        std::vector<std::size_t> near_at(runs + 1), old_at(runs + 1), out_at(runs + 1, 0);
+        for (std::size_t r = 0; r <= runs; ++r) {
+            near_at[r] = near.size() * r / runs;
+            old_at[r] = r == 0 ? 0 : r == runs || near_at[r] == near.size() ? old.size()
+                : static_cast<std::size_t>(std::lower_bound(old.begin(), old.end(), near[near_at[r]],
+                                                            [&](const PairIndex& q, const auto& n) { return key(q) < n; }) - old.begin());
         }
-        for (; k < old.size(); ++k) keep_bridged(k);
+        // Run r's merged pairs in order, each as emit(pair, its old index or none, engaged).
+        constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+        auto walk = [&](std::size_t r, auto emit) {
+            std::size_t k = old_at[r];
+            auto keep_bridged = [&](std::size_t o) {
+                if (law.acts_across_gap(old_states[o])) emit(old[o], o, std::uint8_t{1});
+            };
+            for (std::size_t m = near_at[r]; m < near_at[r + 1]; ++m) {
+                const auto& [i, j] = near[m];
+                for (; k < old_at[r + 1] && key(old[k]) < std::make_pair(i, j); ++k) keep_bridged(k);
+                if (k < old_at[r + 1] && old[k].i == i && old[k].j == j) emit(old[k], k, old_engaged[k]), ++k;
+                else emit(PairIndex{i, j}, none, std::uint8_t{0});
+            }
+            for (; k < old_at[r + 1]; ++k) keep_bridged(k);
+        };
+#pragma omp parallel for schedule(static, 1) if (runs > 1)
+        for (long r = 0; r < static_cast<long>(runs); ++r)
+            walk(static_cast<std::size_t>(r), [&](const PairIndex&, std::size_t, std::uint8_t) { ++out_at[static_cast<std::size_t>(r) + 1]; });
+        for (std::size_t r = 0; r < runs; ++r) out_at[r + 1] += out_at[r];
+        pairs_.resize(out_at[runs]), states_.resize(out_at[runs]), engaged_.resize(out_at[runs]);
+#pragma omp parallel for schedule(static, 1) if (runs > 1)
+        for (long r = 0; r < static_cast<long>(runs); ++r) {
+            std::size_t at = out_at[static_cast<std::size_t>(r)];
+            walk(static_cast<std::size_t>(r), [&](const PairIndex& q, std::size_t o, std::uint8_t engaged) {
+                pairs_[at] = q, states_[at] = o == none ? LawState{} : old_states[o], engaged_[at] = engaged;
+                ++at;
+            });
+        }
         index(p);
     }
 
@@ -231,20 +261,13 @@ private:
     // For each particle, the pairs it belongs to in ascending pair order (CSR), with its side:
     // entry = 2·pair + (0 if it is i, 1 if it is j); and each pair's shape.
     void index(const Particles& p) {
-        incidence_start_.assign(p.size() + 1, 0);
-        for (const auto& q : pairs_) ++incidence_start_[q.i + 1], ++incidence_start_[q.j + 1];
-        for (std::size_t k = 0; k < p.size(); ++k) incidence_start_[k + 1] += incidence_start_[k];
-        incidence_.resize(2 * pairs_.size());
-        std::vector<std::uint32_t> fill(incidence_start_.begin(), incidence_start_.end() - 1);
-        for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
-            incidence_[fill[pairs_[k].i]++] = 2 * k;
-            incidence_[fill[pairs_[k].j]++] = 2 * k + 1;
-        }
-        shares_ = {};  // drawn again for the new list (share_work)
+        Buckets by_sphere = bucket_by(2 * pairs_.size(), p.size(), [&](std::size_t e) { return e % 2 ? pairs_[e / 2].j : pairs_[e / 2].i; });
+        incidence_start_.swap(by_sphere.start), incidence_.swap(by_sphere.order);
         shapes_.resize(pairs_.size());
         const long listed = static_cast<long>(pairs_.size());
 #pragma omp parallel for schedule(static) if (listed > parallel_threshold)  // two roots and four divisions a pair
         for (long k = 0; k < listed; ++k) shapes_[k] = pair_shape(p, pairs_[k].i, pairs_[k].j);
+        shares_ = {};  // drawn again for the new list (share_work)
     }
 
     // What a listed pair contributes: nothing (beyond the law's reach, or apart with no bridge
@@ -292,10 +315,8 @@ private:
         if constexpr (Ledger) {
             std::vector<std::size_t> split;
             split_by_work(split, pairs_.size(), parts, 0, [](std::size_t) { return std::size_t{0}; });
-            std::size_t part = 0;
-            shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) {
-                while (k >= split[part + 1]) ++part;
-                return part;
+            shares_ = shares_of(pairs_, p.size(), parts, [&](std::size_t k) {  // the run k lies in
+                return static_cast<std::size_t>(std::upper_bound(split.begin(), split.end(), k) - split.begin()) - 1;
             });
         } else {
             const auto owner =

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <omp.h>
 #include <utility>
 #include <vector>
 
@@ -38,22 +39,49 @@ struct PairShares {
 };
 
 // The shares for `parts` threads when pair k falls to thread owner(k); pairs (with members i, j)
-// ascending, n spheres; parts ≤ most_threads.
+// ascending, n spheres; parts ≤ most_threads. owner is called from several threads at once. The
+// pairs' passes run on all threads: each takes a run of consecutive pairs and notes, per sphere,
+// the thread of its first pair there and whether its pairs there all have one thread; the notes
+// are then joined sphere by sphere in run order (the same as one pass in pair order).
 template <class Pairs, class Owner>
 PairShares shares_of(const Pairs& pairs, std::size_t n, int parts, Owner owner) {
     PairShares s;
     s.runs.assign(static_cast<std::size_t>(parts), {});
+    const long listed = static_cast<long>(pairs.size());
     s.direct.resize(pairs.size());
-    constexpr std::uint8_t none = 0xFF, mixed = 0xFE;  // a sphere's thread: none yet, or two
-    std::vector<std::uint8_t> thread_of(n, none), first_of(n, none);
+    std::vector<std::uint8_t> thread_of_pair(pairs.size());
+#pragma omp parallel for schedule(static) if (listed > parallel_threshold)
+    for (long k = 0; k < listed; ++k) thread_of_pair[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(owner(static_cast<std::size_t>(k)));
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const auto t = static_cast<std::uint8_t>(owner(k));
-        auto& runs = s.runs[t];
+        auto& runs = s.runs[thread_of_pair[k]];
         if (!runs.empty() && runs.back().second == k) ++runs.back().second;
         else runs.emplace_back(k, k + 1);
-        for (const std::uint32_t x : {pairs[k].i, pairs[k].j}) {
-            thread_of[x] = thread_of[x] == none || thread_of[x] == t ? t : mixed;
-            if (first_of[x] == none) first_of[x] = t;
+    }
+    constexpr std::uint8_t none = 0xFF, mixed = 0xFE;  // a sphere's thread: none yet, or two
+    auto join = [](std::uint8_t a, std::uint8_t b) -> std::uint8_t { return a == none || a == b ? b : b == none ? a : mixed; };
+    std::vector<std::uint8_t> thread_of(n, none), first_of(n, none);
+    std::vector<std::vector<std::uint8_t>> notes;  // per run of pairs: thread_of, then first_of, 2n bytes
+#pragma omp parallel if (listed > parallel_threshold)
+    {
+        const int c = omp_get_thread_num(), chunks = omp_get_num_threads();
+#pragma omp single
+        notes.assign(static_cast<std::size_t>(chunks), std::vector<std::uint8_t>(2 * n, none));  // implied barrier after
+        std::uint8_t* const mine = notes[static_cast<std::size_t>(c)].data();
+        const std::size_t from = pairs.size() * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
+        const std::size_t to = pairs.size() * static_cast<std::size_t>(c + 1) / static_cast<std::size_t>(chunks);
+        for (std::size_t k = from; k < to; ++k)
+            for (const std::uint32_t x : {pairs[k].i, pairs[k].j}) {
+                mine[x] = join(mine[x], thread_of_pair[k]);
+                if (mine[n + x] == none) mine[n + x] = thread_of_pair[k];
+            }
+#pragma omp barrier
+#pragma omp for schedule(static)
+        for (long xx = 0; xx < static_cast<long>(n); ++xx) {
+            const auto x = static_cast<std::size_t>(xx);
+            for (const auto& note : notes) {
+                thread_of[x] = join(thread_of[x], note[x]);
+                if (first_of[x] == none) first_of[x] = note[n + x];
+            }
         }
     }
     s.spheres.assign(static_cast<std::size_t>(parts) + 1, 0);
@@ -65,8 +93,11 @@ PairShares shares_of(const Pairs& pairs, std::size_t n, int parts, Owner owner) 
     for (std::size_t t = 0; t < static_cast<std::size_t>(parts); ++t)
         for (std::size_t x = s.spheres[t]; x < s.spheres[t + 1]; ++x)
             if (thread_of[x] != none && thread_of[x] != t) thread_of[x] = mixed;
-    for (std::size_t k = 0; k < pairs.size(); ++k)
+#pragma omp parallel for schedule(static) if (listed > parallel_threshold)
+    for (long kk = 0; kk < listed; ++kk) {
+        const auto k = static_cast<std::size_t>(kk);
         s.direct[k] = static_cast<std::uint8_t>((thread_of[pairs[k].i] != mixed) | (thread_of[pairs[k].j] != mixed) << 1);
+    }
     for (std::uint32_t x = 0; x < n; ++x)
         if (thread_of[x] == mixed) s.gathering.push_back(x);
     return s;

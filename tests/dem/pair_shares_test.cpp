@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <omp.h>
 #include <random>
 #include <set>
 #include <vector>
@@ -129,6 +130,15 @@ TEST_CASE("Pair shares on a random cloud: each pair once, gathering exactly wher
     for (const int parts : {2, 3, 4}) {
         const auto owner = slab_owner(pairs, p, parts, -1, [](std::size_t) { return 1; });
         const PairShares s = shares_of(pairs, p.size(), parts, [&](std::size_t k) { return owner[k]; });
+        for (const int threads : {1, 3}) {  // drawn on other thread counts: the same shares (checked below)
+            omp_set_num_threads(threads);
+            const PairShares again = shares_of(pairs, p.size(), parts, [&](std::size_t k) { return owner[k]; });
+            CHECK(again.runs == s.runs);
+            CHECK(again.direct == s.direct);
+            CHECK(again.gathering == s.gathering);
+            CHECK(again.spheres == s.spheres);
+        }
+        omp_set_num_threads(omp_get_num_procs());
         std::vector<int> seen(pairs.size(), 0);
         std::vector<std::set<int>> threads_of(p.size());
         for (int t = 0; t < parts; ++t) {
