@@ -48,6 +48,7 @@ FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
         std::uniform_real_distribution<double> u(-1, 1), uz(z_lo, z_hi);
         // Drawn on one thread (the stream fixes the points), tested in blocks on all.
         std::vector<dem::Vec3> block;
+        const double cover = std::min(*std::max_element(all.radius.begin(), all.radius.end()), 2 * r);  // m, the largest sphere's reach
         while (m.core_points < points) {
             block.clear();
             while (block.size() < 65536 && m.core_points + block.size() < points) {
@@ -60,7 +61,7 @@ FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
             for (long b = 0; b < drawn; ++b) {
                 const dem::Vec3& q = block[static_cast<std::size_t>(b)];
                 bool covered = false;
-                cells.near(q, [&](std::size_t j, const dem::Vec3& x) { covered = covered || (q - x).squaredNorm() < all.radius[j] * all.radius[j]; });
+                cells.near(q, cover, [&](std::size_t j, const dem::Vec3& x) { covered = covered || (q - x).squaredNorm() < all.radius[j] * all.radius[j]; });
                 inside += covered;
             }
             m.core_points += block.size();
