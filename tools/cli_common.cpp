@@ -1,5 +1,7 @@
 #include "cli_common.hpp"
 
+#include "slump/coarse_grain.hpp"
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -168,6 +170,12 @@ std::function<void(int, int)> progress_printer(const std::string& what) {
                               done == total ? "\n" : "");
         else if (done == total) std::fprintf(stderr, "%s: %d/%d done\n", what.c_str(), done, total);
     };
+}
+
+std::vector<double> scale_factors_or_usable(const std::string& given, const slump::SlumpScene& fine) {
+    if (!given.empty()) return parse_number_list(given, "--sf", 0, 100);
+    const auto usable = slump::usable_scale_factors(fine, slump::table1_scale_factors);
+    return usable.empty() ? slump::table1_scale_factors : usable;
 }
 
 }  // namespace demscale::cli

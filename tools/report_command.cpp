@@ -28,12 +28,12 @@ int run_report(const Options& o) {
     report::ReportOptions r;
     r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
     r.scene_label = display_path(r.scene_path);
-    load_scene(r.scene_path);  // its bridge warnings, before the long run
+    const auto scene = load_scene(r.scene_path);  // its bridge warnings, before the long run
     // The similarity table follows the scene the user names; the shipped scenes go with the paper's Table 1.
     r.similarity = similarity_inputs(o.config, o.scene);
     r.bridge_table_path = default_bridge_table;
     if (!o.exponents.empty()) r.exponents = parse_exponents(o.exponents, "--exponents");
-    r.scale_factors = parse_number_list(!o.sfs.empty() ? o.sfs : o.quick ? "1.4" : "1.4,1.96,2.74,3.84", "--sf", 0, 100);
+    r.scale_factors = scale_factors_or_usable(o.sfs.empty() && o.quick ? "1.4" : o.sfs, scene);
     r.quick = o.quick;
     r.out_dir = o.out_dir;
     if (!o.no_cache) r.cache_dir = o.cache;
@@ -69,7 +69,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_option("--scene", o->scene, "slump scene (default: data/scenes/kantro_wet.toml; --quick: small_wet.toml)");
     c->add_option("--config", o->config, "Table 1 style inputs for the similarity table (default: the --scene's own; without --scene data/table1.toml)");
     c->add_option("--exponent,--exponents", o->exponents, "candidate exponents k, comma-separated (default: the scene's or config's, 1,3)");
-    c->add_option("--sf", o->sfs, "scale factors of the coarse runs (default 1.4,1.96,2.74,3.84; --quick: 1.4)");
+    c->add_option("--sf", o->sfs, "scale factors of the coarse runs (default: those of 1.4,1.96,2.74,3.84 the scene's cone does not limit; --quick: 1.4)");
     c->add_option("--out", o->out_dir, "folder for report.html, report.md and figures/ (default: report/)");
     c->add_flag("--quick", o->quick, "small scene, coarse grids: the whole report in under a minute");
     c->add_option("--cache", o->cache, "folder of finished slump runs, reused by scene key (default: cache/)");

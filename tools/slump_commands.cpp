@@ -102,8 +102,8 @@ int run_slump_command(const Options& o) {
     if (!o.resume.empty() && std::filesystem::path(o.resume) == phases.checkpoint) std::filesystem::remove(phases.checkpoint);
     if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "\n");
     char title[200];
-    std::snprintf(title, sizeof title, "%s, S_f = %g, gamma = gamma0 S_f^%g: %zu spheres, slump %.1f mm, spread d95 %.1f mm",
-                  scene.name.c_str(), o.sf, o.exponent, r.particles, r.slump() * 1e3, r.final.spread_d95 * 1e3);
+    std::snprintf(title, sizeof title, "%s, S_f = %g, gamma = gamma0 S_f^%g: %zu spheres, slump %.1f mm, spread %.1f mm",
+                  scene.name.c_str(), o.sf, o.exponent, r.particles, r.slump() * 1e3, r.final.spread * 1e3);
     const auto files = slump::write_slump_files(r, title, o.out_dir, "slump", !o.no_png);
 
     nlohmann::ordered_json j;
@@ -124,6 +124,9 @@ int run_slump_command(const Options& o) {
     j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
     j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
     j["pour_time_s"] = r.pour_time;
+    j["fill_mass_g"] = r.fill.mass * 1e3;
+    j["fill_mass_target_g"] = slump::fill_mass(scene) * 1e3;
+    j["fill_height_mm"] = r.fill.height * 1e3;
     j["fill_solid_fraction"] = r.fill.solid_fraction;
     j["fill_core_fraction"] = r.fill.core_points > 0 ? nlohmann::ordered_json(r.fill.core_fraction) : nlohmann::ordered_json();
     j["fill_coordination"] = r.fill.coordination;
@@ -142,9 +145,12 @@ int run_slump_command(const Options& o) {
     j["slump_mm"] = r.slump() * 1e3;
     j["slump_over_fill_height"] = r.slump() / r.initial_height;
     j["slump_fine_radii"] = r.slump() / fine.radius_m;
+    j["spread_mm"] = r.final.spread * 1e3;
+    j["repose_angle_deg"] = r.final.repose_angle_deg ? nlohmann::ordered_json(*r.final.repose_angle_deg) : nlohmann::ordered_json();
+    // The sphere-level measures the size-independent ones replace (docs/slump-measures.md).
+    j["final_height_top_mm"] = r.final.height_top * 1e3;
     j["spread_d95_mm"] = r.final.spread_d95 * 1e3;
     j["spread_max_mm"] = r.final.spread_max * 1e3;
-    j["repose_angle_deg"] = r.final.repose_angle_deg ? nlohmann::ordered_json(*r.final.repose_angle_deg) : nlohmann::ordered_json();
     j["end_time_s"] = r.end;
     if (r.energy_ledger && !r.history.empty()) {  // the energy ledger at the end (J) and how well it balanced
         const auto& e = r.history.back().energy;
@@ -193,10 +199,12 @@ int run_export_liggghts(const Options& o) {
 int run_pile(const Options& o) {
     const auto scene = slump::load_slump_scene(o.scene);  // measures only: no bridge runs
     const auto p = io::read_liggghts_dump(o.dump, scene.material.density);
-    const auto m = slump::measure_pile(p, slump::lone_sphere_top(scene));
+    const auto m = slump::measure_pile(p, scene);
     nlohmann::ordered_json j;
     j["particles"] = p.size();
     j["final_height_mm"] = m.height * 1e3;
+    j["spread_mm"] = m.spread * 1e3;
+    j["final_height_top_mm"] = m.height_top * 1e3;
     j["spread_d95_mm"] = m.spread_d95 * 1e3;
     j["spread_max_mm"] = m.spread_max * 1e3;
     j["repose_angle_deg"] = m.repose_angle_deg ? nlohmann::ordered_json(*m.repose_angle_deg) : nlohmann::ordered_json();

@@ -20,7 +20,7 @@ namespace {
 struct Options {
     std::string scene = default_scene;
     std::string exponents = "1";
-    std::string sfs = "1.4,1.96,2.74,3.84";
+    std::string sfs;  // empty: the scene's usable S_f of Table 1's
     std::vector<std::string> scaled;
     std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
     int seeds = 8;
@@ -31,7 +31,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     slump::StudyPlan plan;
     plan.fine = load_scene(o.scene);
     plan.exponents = parse_exponents(o.exponents, exponent_field);
-    plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
+    plan.scale_factors = scale_factors_or_usable(o.sfs, plan.fine);
     plan.scaled = o.scaled;
     plan.tolerances = plan.fine.tolerances;
     auto tolerance = [](const std::optional<double>& given, double& target, const char* field) {
@@ -64,7 +64,7 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
     const std::string label = display_path(o.scene);
     std::vector<io::Table> tables = {report::verdict_table(study, label), report::ensemble_table(study, label),
                                      report::similarity_groups_table(plan.exponents)};
-    if (plan.exponents.size() > 1) tables.push_back(report::best_exponent_table(study, plan.scale_factors));
+    if (plan.exponents.size() > 1) tables.push_back(report::best_exponent_table(study, study.judged_scale_factors()));
     const auto files = report::write_study_files(study, label, o.run.out_dir, stem, !o.run.no_png);
     const auto overall = study.overall();
     if (format == io::Format::json) {
@@ -82,7 +82,14 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
         for (const auto& v : study.verdicts) ++n[static_cast<int>(v.overall)];
         std::cout << "\nverdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
                   << " INCONCLUSIVE of " << study.verdicts.size() << " (S_f, k) ensembles of " << plan.seeds << " seeds\n";
-        if (overall == stats::Verdict::inconclusive)
+        for (const auto& l : study.limited) {
+            std::cout << "S_f = " << format_short(l.sf) << ": GEOMETRY-LIMITED, not run (";
+            for (std::size_t i = 0; i < l.reasons.size(); ++i) std::cout << (i ? "; " : "") << l.reasons[i];
+            std::cout << "); it does not enter the verdict\n";
+        }
+        if (study.verdicts.empty())
+            std::cout << "INCONCLUSIVE: no S_f could be judged in this scene's cone (a finer scene, or lower [check] limits)\n";
+        else if (overall == stats::Verdict::inconclusive)
             std::cout << "INCONCLUSIVE: the 95 % intervals straddle a tolerance; the smallest tolerances these data confirm are in the "
                          "verdict table (more --seeds narrow the intervals)\n";
     }
@@ -93,11 +100,12 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
 
 void add_common(CLI::App* c, Options& o) {
     c->add_option("--scene", o.scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
-    c->add_option("--sf", o.sfs, "scale factors S_f of the coarse runs")->capture_default_str();
+    c->add_option("--sf", o.sfs,
+                  "scale factors S_f of the coarse runs (default: those of 1.4,1.96,2.74,3.84 the scene's cone does not limit)");
     c->add_option("--scale", o.scaled, "parameters scaled by the basis k implies: gravity, youngs_modulus, velocity, viscosity")
         ->delimiter(',');
     c->add_option("--tol-slump", o.tol_slump, "slump tolerance, a fraction of the fill height (default: the scene's [check])");
-    c->add_option("--tol-spread", o.tol_spread, "relative spread-d95 tolerance (default: the scene's [check])");
+    c->add_option("--tol-spread", o.tol_spread, "relative spread tolerance (diameter at half height) (default: the scene's [check])");
     c->add_option("--tol-profile", o.tol_profile, "profile tolerance, relative L2 shape distance (default: the scene's [check])");
     c->add_option("--seeds", o.seeds, "runs per ensemble: the fine one and each (S_f, k)")->capture_default_str();
     add_study_run_options(c, o.run, "the table and figures");

@@ -47,7 +47,7 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     io::Table t;
     t.title = "Response of the slump test to surface tension, per scale factor (" + scene_label + ")";
     t.metadata = {{"scene", scene_label}};
-    t.columns = {"sf", "gamma_n_per_m", "seeds", "slump_over_height", "slump_low", "slump_high", "spread_d95_over_d0",
+    t.columns = {"sf", "gamma_n_per_m", "seeds", "slump_over_height", "slump_low", "slump_high", "spread_over_d0",
                  "spread_low", "spread_high", "at_rest", "seeds_split"};
     auto add = [&](const slump::ResponseEnsemble& e) {
         const auto& s = e.slump_over_height;
@@ -104,7 +104,7 @@ io::Table dry_baseline_table(const slump::ResponseStudy& study, const std::strin
         for (const auto& c : b.criteria) row.push_back(100 * c.estimate), row.push_back(100 * c.interval.low), row.push_back(100 * c.interval.high);
         const auto& n = b.noise;
         row.push_back(100 * n.slump_over_height.sd);
-        row.push_back(100 * n.spread_d95.sd / n.spread_d95.mean);
+        row.push_back(100 * n.spread.sd / n.spread.mean);
         row.push_back(100 * n.profile.mean);
         const bool within = b.criteria[0].interval.contains(0) && b.criteria[1].interval.contains(0) &&
                             b.criteria[2].interval.high <= n.profile.mean;

@@ -93,7 +93,7 @@ std::string verdict_text(const slump::Study& study, const std::vector<double>& s
     const auto& n = study.noise;
     v += "The fine ensemble (" + std::to_string(study.noise.slump_over_height.n) + " seeds) scatters by " +
          pct(n.slump_over_height.sd) + " of the fill height in slump (sd), " +
-         pct(n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300)) + " in spread and " + pct(n.profile.mean) +
+         pct(n.spread.sd / std::max(n.spread.mean, 1e-300)) + " in spread and " + pct(n.profile.mean) +
          " in profile (each run from the mean shape): differences of that size between single runs are noise. ";
     for (double sf : sfs) {
         const auto& b = study.best_at(sf);
@@ -248,7 +248,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
             "with particles of radius S_f R and surface tension gamma S_f^k, everything else held (time step from the Rayleigh time)."});
         auto side = [&](const slump::StudyRun& r, const std::string& stem, const std::string& what) {
             const auto title = what + ": " + std::to_string(r.result.particles) + " particles, slump " +
-                               format_short(r.result.slump() * 1e3, 3) + " mm, spread d95 " + format_short(r.result.final.spread_d95 * 1e3, 3) + " mm";
+                               format_short(r.result.slump() * 1e3, 3) + " mm, spread " + format_short(r.result.final.spread * 1e3, 3) + " mm";
             slump::write_slump_files(r.result, title, figures, stem, true);
             slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title, true});
         };
@@ -261,8 +261,8 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
         slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
         slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
-        slump_section.blocks.push_back(TableBlock{best_exponent_table(study, o.scale_factors)});
-        slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, o.scale_factors)});
+        slump_section.blocks.push_back(TableBlock{best_exponent_table(study, study.judged_scale_factors())});
+        slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, study.judged_scale_factors())});
         slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
         verdict_section.blocks.push_back(Paragraph{
             "Each coarse ensemble (S_f, k) is compared with the fine ensemble, " + std::to_string(plan.seeds) +

@@ -102,7 +102,7 @@ std::string error_script(const std::string& stem, const std::vector<double>& sfs
     };
     const Panel panels[] = {
         {"slump", "slump difference (% of fill height)", 100 * tol.slump, 100 * n.slump_over_height.sd, true},
-        {"spread", "spread d95 difference (%)", 100 * tol.spread, 100 * n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300), true},
+        {"spread", "spread difference (%)", 100 * tol.spread, 100 * n.spread.sd / std::max(n.spread.mean, 1e-300), true},
         {"profile", "profile distance (%)", 100 * tol.profile, 100 * n.profile.mean, false}};
     for (const auto& p : panels) {
         const std::string c = p.col;

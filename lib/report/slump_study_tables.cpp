@@ -19,7 +19,7 @@ std::string remarks(const slump::StudyRun& r) {
 }
 
 std::string tolerances_text(const slump::Tolerances& t) {
-    return "slump " + format_short(100 * t.slump) + " % of the fill height, spread d95 " + format_short(100 * t.spread) +
+    return "slump " + format_short(100 * t.slump) + " % of the fill height, spread " + format_short(100 * t.spread) +
            " %, profile " + format_short(100 * t.profile) + " %";
 }
 
@@ -61,8 +61,18 @@ io::Table verdict_table(const slump::Study& study, const std::string& scene_labe
         row.push_back(notes);
         t.rows.push_back(std::move(row));
     }
+    for (const auto& l : study.limited) {
+        std::string why;
+        for (const auto& r : l.reasons) why += (why.empty() ? "" : "; ") + r;
+        t.rows.push_back({l.sf, io::Cell(io::not_available), 0.0, io::Cell(io::not_available), io::Cell(io::not_available),
+                          io::Cell(io::not_available), "GEOMETRY-LIMITED", io::Cell(io::not_available), why + " (not run)"});
+    }
+    if (!study.limited.empty())
+        t.notes.push_back("GEOMETRY-LIMITED: the coarse scene is below the scene's [check] limits (top opening, fill height in particle "
+                          "diameters, spheres per fill), so the cone rather than the exponent decides its runs; it is neither PASS nor "
+                          "FAIL and does not enter the overall verdict");
     t.notes.push_back("each cell: estimate [95 % interval], in %; slump as (coarse - fine) mean slump over the fill height, Welch t; "
-                      "spread as the difference of mean d95 over the fine mean, Welch t; profile as the distance between the mean "
+                      "spread (diameter at half height) as the difference of means over the fine mean, Welch t; profile as the distance between the mean "
                       "shapes, bootstrap over seeds");
     t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
     t.notes.push_back("smallest_tolerances_pct: slump / spread / profile tolerances these data could confirm");
@@ -73,17 +83,21 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
     io::Table t;
     t.title = "Ensembles: means over the seeds (" + scene_label + ")";
     t.columns = {"sf", "exponent", "seeds", "particles", "steps", "wall_s", "speedup_work", "speedup_wall", "slump_over_height",
-                 "slump_over_height_sd", "slump_mm", "slump_fine_radii", "spread_d95_mm", "spread_d95_sd_mm", "profile_distance_pct",
-                 "at_rest", "time_to_rest_s", "fill_solid_fraction", "fill_coordination", "repose_deg"};
+                 "slump_over_height_sd", "slump_mm", "slump_fine_radii", "spread_mm", "spread_sd_mm", "profile_distance_pct",
+                 "at_rest", "time_to_rest_s", "fill_mass_g", "fill_mass_ratio", "fill_height_mm", "fill_solid_fraction", "fill_coordination",
+                 "repose_deg"};
+    double fine_mass = 0;
+    for (const auto* r : study.fine_ensemble()) fine_mass += r->fill.mass / static_cast<double>(study.fine_ensemble().size());
     const double r_fine = study.reference.scene.radius_m;
     auto row = [&](const std::vector<const slump::SlumpResult*>& runs, double sf, io::Cell exponent) {
-        std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall, work;
+        std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall, work, mass, height;
         std::size_t at_rest = 0;
         for (const auto* r : runs) {
-            sh.push_back(r->slump() / r->initial_height), mm.push_back(r->slump() * 1e3), d95.push_back(r->final.spread_d95 * 1e3);
+            sh.push_back(r->slump() / r->initial_height), mm.push_back(r->slump() * 1e3), d95.push_back(r->final.spread * 1e3);
             prof.push_back(100 * slump::compare_to(study.fine, *r).profile_error);
             if (r->came_to_rest) ++at_rest, rest_t.push_back(r->time_to_rest());
             phi.push_back(r->fill.solid_fraction), z.push_back(r->fill.coordination);
+            mass.push_back(r->fill.mass * 1e3), height.push_back(r->fill.height * 1e3);
             if (r->final.repose_angle_deg) repose.push_back(*r->final.repose_angle_deg);
             particles.push_back(double(r->particles)), steps.push_back(double(r->steps + r->pour_steps)), wall.push_back(r->wall_s);
             work.push_back(r->particle_steps());
@@ -93,7 +107,8 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
                           stats::summarize(wall).mean, study.fine.particle_steps / stats::summarize(work).mean, study.fine.wall_s / stats::summarize(wall).mean,
                           s.mean, s.sd, stats::summarize(mm).mean, stats::summarize(mm).mean * 1e-3 / r_fine, d.mean, d.sd,
                           stats::summarize(prof).mean, std::to_string(at_rest) + " of " + std::to_string(runs.size()),
-                          mean_or_na(rest_t), stats::summarize(phi).mean, stats::summarize(z).mean, mean_or_na(repose)});
+                          mean_or_na(rest_t), stats::summarize(mass).mean, stats::summarize(mass).mean * 1e-3 / fine_mass,
+                          stats::summarize(height).mean, stats::summarize(phi).mean, stats::summarize(z).mean, mean_or_na(repose)});
     };
     row(study.fine_ensemble(), 1.0, io::Cell(io::not_available));
     for (std::size_t i = 0; i < study.runs.size(); ++i) row(study.coarse_ensemble(i), study.runs[i].grain.sf, study.runs[i].grain.exponent);
@@ -102,7 +117,9 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
                       "ensemble, its own run-to-run scatter (the noise floor)");
     t.notes.push_back("steps, wall_s and the speed-ups count the pour too");
     t.notes.push_back("time_to_rest_s: from the cone's removal until the pile was at rest (mean over the runs that came to rest)");
-    t.notes.push_back("fill_solid_fraction: sphere volume over the cone volume below the fill's top, before the lift");
+    t.notes.push_back("fill_mass_ratio: the ensemble's mean fill mass over the fine ensemble's; fill_height_mm: the fill's surface "
+                      "height before the lift (a looser coarse packing of the same mass stands higher)");
+    t.notes.push_back("fill_solid_fraction: sphere volume over the cone volume below the fill's surface, before the lift");
     return t;
 }
 
@@ -112,13 +129,13 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
     t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)}};
     t.columns = {"sf",       "exponent",        "seed",          "particles",      "steps",          "dt_us",
                  "wall_s",   "speedup_wall",    "speedup_work",  "slump_mm",       "slump_over_height", "slump_error_pct_of_height",
-                 "spread_d95_mm", "spread_error_pct", "profile_error_pct", "repose_deg", "time_to_rest_s", "remarks"};
+                 "spread_mm", "spread_error_pct", "profile_error_pct", "repose_deg", "time_to_rest_s", "remarks"};
     auto add = [&](const slump::StudyRun& r, io::Cell exponent) {
         const auto& x = r.result;
         const auto& c = r.versus_reference;
         t.rows.push_back({r.grain.sf, exponent, static_cast<double>(r.scene.seed), static_cast<double>(x.particles),
                           static_cast<double>(x.steps + x.pour_steps), x.dt * 1e6, x.wall_s, c.wall_speedup, c.work_speedup, x.slump() * 1e3,
-                          x.slump() / x.initial_height, 100 * c.slump_error, x.final.spread_d95 * 1e3, 100 * c.spread_error,
+                          x.slump() / x.initial_height, 100 * c.slump_error, x.final.spread * 1e3, 100 * c.spread_error,
                           100 * c.profile_error, x.final.repose_angle_deg ? io::Cell(*x.final.repose_angle_deg) : io::Cell(io::not_available),
                           x.came_to_rest ? io::Cell(x.time_to_rest()) : io::Cell(io::not_available), remarks(r)});
     };
@@ -131,7 +148,7 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
     }
     t.notes.push_back("rows with S_f = 1 and no exponent: the fine ensemble");
     t.notes.push_back("slump_error_pct_of_height: slump over the fill height minus the fine ensemble's mean, in % of the height");
-    t.notes.push_back("spread and profile errors: relative to the fine ensemble's mean d95 and mean shape (fringe and empty bins do "
+    t.notes.push_back("spread and profile errors: relative to the fine ensemble's mean spread and mean shape (fringe and empty bins do "
                       "not count; docs/slump-measures.md)");
     return t;
 }
@@ -143,7 +160,7 @@ io::Table best_exponent_table(const slump::Study& study, const std::vector<doubl
     const auto& n = study.noise;
     t.metadata = {{"noise floor (fine ensemble, sd over seeds)",
                    "slump " + format_short(100 * n.slump_over_height.sd, 3) + " % of the height, spread " +
-                       format_short(100 * n.spread_d95.sd / std::max(n.spread_d95.mean, 1e-300), 3) + " %, profile " +
+                       format_short(100 * n.spread.sd / std::max(n.spread.mean, 1e-300), 3) + " %, profile " +
                        format_short(100 * n.profile.mean, 3) + " % (each fine run from the fine mean shape)"}};
     for (double sf : scale_factors) {
         const auto& b = study.best_at(sf);

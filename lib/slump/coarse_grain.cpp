@@ -49,14 +49,36 @@ SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c) {
     return s;
 }
 
-std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t particles) {
+namespace {
+
+std::vector<std::string> below(const SlumpScene& s, double particles, const GeometryLimits& l) {
     std::vector<std::string> w;
     const double d = 2 * s.radius_m;
-    if (s.top_diameter_m < 5 * d)
-        w.push_back("top opening " + format_short(s.top_diameter_m / d, 2) + " diameters wide (< 5)");
-    if (s.fill_height_m < 10 * d) w.push_back("fill " + format_short(s.fill_height_m / d, 2) + " diameters high (< 10)");
-    if (particles < 200) w.push_back(std::to_string(particles) + " particles (< 200)");
+    if (s.top_diameter_m < l.opening_diameters * d)
+        w.push_back("top opening " + format_short(s.top_diameter_m / d, 2) + " diameters wide (< " + format_short(l.opening_diameters) + ")");
+    if (s.fill_height_m < l.fill_diameters * d)
+        w.push_back("fill " + format_short(s.fill_height_m / d, 2) + " diameters high (< " + format_short(l.fill_diameters) + ")");
+    if (particles < l.particles)
+        w.push_back(format_short(particles, 3) + " particles (< " + format_short(l.particles) + ")");
     return w;
+}
+
+}  // namespace
+
+std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t particles) {
+    return below(s, static_cast<double>(particles), {5, 10, 200});
+}
+
+std::vector<std::string> geometry_limits(const SlumpScene& s) {
+    const double sphere = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
+    return below(s, std::floor(fill_mass(s) / sphere + 0.5), s.limits);
+}
+
+std::vector<double> usable_scale_factors(const SlumpScene& fine, const std::vector<double>& candidates) {
+    std::vector<double> usable;
+    for (double sf : candidates)
+        if (2 * sf * fine.radius_m < fine.top_diameter_m && geometry_limits(coarse_grained(fine, {sf, 1, {}})).empty()) usable.push_back(sf);
+    return usable;
 }
 
 }  // namespace demscale::slump

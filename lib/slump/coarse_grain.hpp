@@ -23,8 +23,19 @@ struct CoarseGraining {
 // top opening (2R̄ ≥ top diameter).
 SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c);
 
-// Where geometry rather than contact scaling limits similarity: fewer than five particle diameters
+// Where geometry may start to matter (a warning beside a run): fewer than five particle diameters
 // across the cone's top opening, a fill fewer than ten diameters high, or fewer than 200 particles.
 std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t particles);
+
+// Why the scene is geometry-limited (none: it is usable): its top opening, fill height in particle
+// diameters or spheres per fill (fill_mass over one sphere's) below the scene's [check] limits.
+// A geometry-limited S_f is neither PASS nor FAIL of an exponent: the cone decides what its runs do.
+std::vector<std::string> geometry_limits(const SlumpScene& s);
+
+// The candidates whose coarse scene is not geometry-limited, in their order.
+std::vector<double> usable_scale_factors(const SlumpScene& fine, const std::vector<double>& candidates);
+
+// Table 1's scale factors, the candidates a command's default --sf is drawn from.
+inline const std::vector<double> table1_scale_factors = {1.4, 1.96, 2.74, 3.84};
 
 }  // namespace demscale::slump

@@ -50,7 +50,7 @@ FineReference fine_reference(const std::vector<const SlumpResult*>& fine, double
     const double n = static_cast<double>(fine.size());
     for (const auto* r : fine) {
         f.slump_over_height += r->slump() / r->initial_height / n;
-        f.spread_d95 += r->final.spread_d95 / n;
+        f.spread += r->final.spread / n;
         f.wall_s += r->wall_s / n;
         f.particle_steps += r->particle_steps() / n;
         f.piles.push_back(r->final);
@@ -61,7 +61,7 @@ FineReference fine_reference(const std::vector<const SlumpResult*>& fine, double
 RunComparison compare_to(const FineReference& f, const SlumpResult& run) {
     RunComparison c;
     c.slump_error = run.slump() / run.initial_height - f.slump_over_height;
-    c.spread_error = (run.final.spread_d95 - f.spread_d95) / f.spread_d95;
+    c.spread_error = (run.final.spread - f.spread) / f.spread;
     if (!f.piles.empty()) {
         const double level = fringe_level(f.piles.front(), run.final);
         c.profile_error = shape_distance(pile_shape(run.final, f.radii, level), f.shape(level));

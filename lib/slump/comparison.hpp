@@ -1,7 +1,7 @@
 // A slump run against the fine ensemble: the differences of the measures the slump test reports,
 // in measures that favour no scale, and the speed-up.
 //  slump   — slump over the fill's initial height, s/H₀ (the coarse run's minus the fine mean);
-//  spread  — spread d95, relative to the fine mean;
+//  spread  — the pile's diameter at half its height (slump/measurements.hpp), relative to the fine mean;
 //  profile — distance of the pile's shape from the fine mean shape, ‖h̄ − h‖₂ / ‖h‖₂ over the
 //            radius (fine bins of 2R). A pile's shape is its profile (highest top per bin) with two
 //            rules that keep the particle size out of it: heights no more than half a coarse radius
@@ -31,7 +31,7 @@ double shape_distance(const std::vector<double>& a, const std::vector<double>& r
 
 // What the fine ensemble is, as one reference: means of its measures and of its shapes.
 struct FineReference {
-    double slump_over_height = 0, spread_d95 = 0;  // means
+    double slump_over_height = 0, spread = 0;  // means
     double wall_s = 0, particle_steps = 0;         // means, for the speed-ups
     std::vector<double> radii;                     // bin centres of width 2R, reaching every run's pile
     std::vector<PileMeasures> piles;               // the fine runs' final piles
@@ -44,7 +44,7 @@ FineReference fine_reference(const std::vector<const SlumpResult*>& fine, double
 
 struct RunComparison {
     double slump_error = 0;    // s̄/H̄₀ − mean(s/H₀), signed, a fraction of the fill height
-    double spread_error = 0;   // (d̄95 − mean d95) / mean d95, signed
+    double spread_error = 0;   // (d̄ − mean d) / mean d, signed
     double profile_error = 0;  // shape distance from the fine mean shape
     double wall_speedup = 0;   // mean fine wall time / this run's wall time
     double work_speedup = 0;   // mean fine particle-steps / this run's particle-steps

@@ -15,7 +15,7 @@ std::vector<double> values(const std::vector<const SlumpResult*>& runs, double (
     for (const auto* r : runs) v.push_back(f(*r));
     return v;
 }
-double spread_d95(const SlumpResult& r) { return r.final.spread_d95; }
+double spread(const SlumpResult& r) { return r.final.spread; }
 
 std::vector<double> mean_shape(const std::vector<std::vector<double>>& shapes, const std::vector<std::size_t>& pick) {
     std::vector<double> m(shapes.front().size(), 0.0);
@@ -51,7 +51,7 @@ std::vector<std::size_t> all_of(std::size_t n) {
 NoiseFloor noise_floor(const std::vector<const SlumpResult*>& fine, const FineReference& ref) {
     NoiseFloor n;
     n.slump_over_height = stats::summarize(values(fine, slump_over_height));
-    n.spread_d95 = stats::summarize(values(fine, spread_d95));
+    n.spread = stats::summarize(values(fine, spread));
     std::vector<double> d;
     const double level = ref.piles.empty() ? 0 : fringe_level(ref.piles.front(), ref.piles.front());
     const auto mean = ref.shape(level);
@@ -89,8 +89,8 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
         slump.reason = "the fine reference slumps " + format_short(fine_slump * 1e3, 3) + " mm, less than one coarse diameter (" +
                        format_short(2 * sf * fine_radius * 1e3, 3) + " mm): this scene cannot tell exponents apart by slump";
     }
-    // Spread d95, relative to the fine mean.
-    const auto fd = values(fine, spread_d95), cd = values(coarse, spread_d95);
+    // Spread (diameter at half height), relative to the fine mean.
+    const auto fd = values(fine, spread), cd = values(coarse, spread);
     const double mean_fd = stats::summarize(fd).mean;
     const auto dd = stats::difference_interval(fd, cd);
     auto spread = criterion("spread", (stats::summarize(cd).mean - mean_fd) / mean_fd, {dd.low / mean_fd, dd.high / mean_fd}, tol.spread);
@@ -110,7 +110,7 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
                                  format_short(100 * scatter, 3) + " %)");
     };
     below_noise("slump", tol.slump, noise.slump_over_height.sd);
-    below_noise("spread", tol.spread, noise.spread_d95.sd / noise.spread_d95.mean);
+    below_noise("spread", tol.spread, noise.spread.sd / noise.spread.mean);
     below_noise("profile", tol.profile, noise.profile.mean);
     if (!wet) v.warnings.push_back("dry scene: k scales only the surface tension, which it does not use; the exponent has no effect");
     return v;

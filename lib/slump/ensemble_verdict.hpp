@@ -1,7 +1,7 @@
 // The verdict on one coarse ensemble (one S_f, one k, several seeds) against the fine ensemble:
 // an equivalence test per measure (stats/verdict.hpp) on the 95 % interval of the difference,
 //  slump   — Welch t interval of mean(s̄/H̄₀) − mean(s/H₀), tolerance absolute (a fraction of H₀);
-//  spread  — Welch t interval of mean(d̄95) − mean(d95), over the fine mean, tolerance relative;
+//  spread  — Welch t interval of mean(d̄) − mean(d) (diameter at half height), over the fine mean, tolerance relative;
 //  profile — bootstrap percentile interval (2 000 resamples of both ensembles' seeds, a fixed
 //            generator seed so that a verdict repeats) of the distance between the two ensembles'
 //            mean shapes (slump/comparison.hpp), tolerance relative; the distance is ≥ 0, so it
@@ -32,7 +32,7 @@ struct Criterion {
 // The fine ensemble's own spread: the noise no tolerance should undercut.
 struct NoiseFloor {
     stats::Summary slump_over_height;  // s/H₀ over the fine seeds
-    stats::Summary spread_d95;         // m
+    stats::Summary spread;         // m
     stats::Summary profile;            // each fine run's shape distance from the fine mean shape
 };
 NoiseFloor noise_floor(const std::vector<const SlumpResult*>& fine, const FineReference& reference);

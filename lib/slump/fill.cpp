@@ -1,5 +1,7 @@
 #include "slump/fill.hpp"
 
+#include "slump/pour.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -15,7 +17,7 @@ dem::Particles fill_cone(const SlumpScene& s) {
     const double first = s.rough_floor ? 2.03 * r : 1.01 * r;  // clear of the floor's grains
     for (int k = 0;; ++k) {
         const double z = first + k * layer;
-        if (z + r > s.fill_height_m) break;
+        if (z + r > s.height_m) break;
         // Inside radius of the cone at this height, less the sphere and a clearance.
         const double inner = 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * (z + r) / s.height_m;
         const double reach = inner - 1.05 * r;
@@ -31,7 +33,7 @@ dem::Particles fill_cone(const SlumpScene& s) {
                 p.add({x + jitter(rng), y + jitter(rng), z + jitter(rng)}, r, s.material.density);
             }
     }
-    return p;
+    return cut_to_mass(s, p);
 }
 
 }  // namespace demscale::slump

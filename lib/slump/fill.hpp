@@ -1,5 +1,5 @@
 // Filling a cone with equal spheres: a hexagonal lattice (gap 2 % of R between neighbours) cut to
-// the cone's inside and the fill height, each sphere jittered by up to 0.5 % of R per axis from a seeded
+// the cone's inside up to its top, then to the fill's mass (slump/pour.hpp), each sphere jittered by up to 0.5 % of R per axis from a seeded
 // generator. The same procedure for every radius, so fine and coarse start from equivalent states.
 // On a rough floor the first layer starts one diameter higher (above the floor's grains).
 #pragma once

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/sphere_grid.hpp"
+#include "slump/measurements.hpp"
 
 namespace demscale::slump {
 
@@ -16,8 +17,13 @@ FillMeasures measure_fill(const dem::Particles& all, const SlumpScene& s) {
     if (n == 0) return m;
     const double r = all.radius[0];
     double solid = 0;
-    for (std::size_t i = 0; i < n; ++i) m.top = std::max(m.top, all.position[i].z() + all.radius[i]), solid += 4.0 / 3.0 * M_PI * std::pow(all.radius[i], 3);
-    m.solid_fraction = solid / cone_volume_below(s, std::min(m.top, s.height_m));
+    for (std::size_t i = 0; i < n; ++i) {
+        m.top = std::max(m.top, all.position[i].z() + all.radius[i]);
+        solid += 4.0 / 3.0 * M_PI * std::pow(all.radius[i], 3);
+        m.mass += all.mass[i];
+    }
+    m.height = measure_pile(all, s).height;
+    m.solid_fraction = solid / cone_volume_below(s, std::min(m.height, s.height_m));
 
     dem::SphereGrid cells(2 * r);
     for (const auto& x : all.position) cells.add(x);

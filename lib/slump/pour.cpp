@@ -5,6 +5,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/input_error.hpp"
 #include "dem/sphere_grid.hpp"
 
 namespace demscale::slump {
@@ -28,30 +29,28 @@ double reach_at(const SlumpScene& s, double z) {
     return std::min(cone_radius_at(s, std::min(z, s.height_m)), cone_radius_at(s, s.height_m)) - 1.05 * s.radius_m;
 }
 
+// Wholly inside the cone: under its top and inside its wall.
+bool inside_cone(const SlumpScene& s, const dem::Vec3& x, double r) {
+    return x.z() + r <= s.height_m && std::hypot(x.x(), x.y()) + r <= cone_radius_at(s, std::max(x.z(), 0.0)) + 1e-9 * r;
+}
+
 }  // namespace
 
+double solid_in_cone(const SlumpScene& s, const dem::Particles& pile) {
+    double v = 0;
+    for (std::size_t i = 0; i < pile.size(); ++i)
+        if (inside_cone(s, pile.position[i], pile.radius[i])) v += sphere_volume(pile.radius[i]);
+    return v;
+}
+
 std::size_t pour_batch_size(const SlumpScene& s, const dem::Particles& pile) {
-    const double r = s.radius_m, vp = sphere_volume(r), strike = s.fill_height_m;
-    const double cover = 0.5 * M_PI * std::pow(cone_radius_at(s, strike), 2) * 2 * r;  // one layer, solid volume
-    if (pile.size() == 0)  // about a loose fill's worth: a denser pile falls short and gets a second batch
-        return static_cast<std::size_t>(std::ceil((0.45 * cone_volume_below(s, strike) + cover) / vp));
-    // The pile's level: the 95th percentile of the sphere tops inside the cone (a sphere perched on
-    // top does not count); its solid fraction below that level sizes the next batch.
-    std::vector<double> tops;
-    double above = 0;
-    for (std::size_t i = 0; i < pile.size(); ++i) {
-        const double top = pile.position[i].z() + pile.radius[i];
-        if (pile.position[i].z() > strike - r) above += sphere_volume(pile.radius[i]);
-        if (std::hypot(pile.position[i].x(), pile.position[i].y()) < cone_radius_at(s, std::min(top, s.height_m))) tops.push_back(top);
-    }
-    if (above >= cover || tops.empty()) return 0;
-    std::sort(tops.begin(), tops.end());
-    const double level = std::min(tops[static_cast<std::size_t>(0.95 * static_cast<double>(tops.size() - 1))], strike);
-    double below = 0;
-    for (double top : tops) below += top <= level ? vp : 0;
-    const double fraction = std::clamp(below / cone_volume_below(s, level), 0.3, 0.64);
-    const double missing = fraction * (cone_volume_below(s, strike) - cone_volume_below(s, level));
-    return static_cast<std::size_t>(std::ceil((missing + cover - above) / vp));
+    const double r = s.radius_m, vp = sphere_volume(r);
+    // The fill's volume plus a layer one diameter thick at a solid fraction of 0.5 over the cone's
+    // cross-section at the fill height: enough to cut the target from at a level that does not
+    // depend on how loosely this radius packs.
+    const double target = fill_mass(s) / s.material.density + 0.5 * M_PI * std::pow(cone_radius_at(s, s.fill_height_m), 2) * 2 * r;
+    const double missing = target - solid_in_cone(s, pile);
+    return missing > 0 ? static_cast<std::size_t>(std::ceil(missing / vp)) : 0;
 }
 
 dem::Particles insert_batch(const SlumpScene& s, const dem::Particles& pile, std::size_t count, unsigned stream) {
@@ -82,16 +81,26 @@ dem::Particles insert_batch(const SlumpScene& s, const dem::Particles& pile, std
     return batch;
 }
 
-dem::Particles strike_off(const SlumpScene& s, const dem::Particles& pile) {
+dem::Particles cut_to_mass(const SlumpScene& s, const dem::Particles& pile) {
+    std::vector<std::size_t> inside;
+    for (std::size_t i = 0; i < pile.size(); ++i)
+        if (inside_cone(s, pile.position[i], pile.radius[i])) inside.push_back(i);
+    std::stable_sort(inside.begin(), inside.end(), [&](std::size_t a, std::size_t b) { return pile.position[a].z() < pile.position[b].z(); });
+    const double target = fill_mass(s);
     dem::Particles kept;
-    for (std::size_t i = 0; i < pile.size(); ++i) {
-        const auto& x = pile.position[i];
-        const double r = pile.radius[i];
-        if (x.z() + r > s.fill_height_m || std::hypot(x.x(), x.y()) + r > cone_radius_at(s, std::max(x.z(), 0.0)) + 1e-9 * r)
-            continue;
-        const auto j = kept.add(x, r, s.material.density, pile.velocity[i], pile.species[i]);
+    double mass = 0;
+    for (std::size_t i : inside) {
+        const double m = s.material.density * sphere_volume(pile.radius[i]);
+        if (mass + 0.5 * m > target) break;  // the count nearest the target
+        const auto j = kept.add(pile.position[i], pile.radius[i], s.material.density, pile.velocity[i], pile.species[i]);
         kept.angular_velocity[j] = pile.angular_velocity[i];
+        mass += m;
     }
+    const double sphere = s.material.density * sphere_volume(s.radius_m);
+    if (target - mass > 0.5 * sphere)
+        throw std::runtime_error("fill: the cone holds " + format_short(mass * 1e3, 4) + " g of spheres of radius " +
+                                 format_short(s.radius_m * 1e3, 3) + " mm, short of the fill's " + format_short(target * 1e3, 4) +
+                                 " g (the pour jams in the top opening, or the fill does not fit under the cone's top at this radius)");
     return kept;
 }
 
@@ -103,7 +112,7 @@ dem::Particles pour_fill(const SlumpScene& s, const std::function<dem::Particles
         pile.append(insert_batch(s, pile, n, static_cast<unsigned>(batch)));
         pile = settle(std::move(pile));
     }
-    return strike_off(s, pile);
+    return cut_to_mass(s, pile);
 }
 
 }  // namespace demscale::slump

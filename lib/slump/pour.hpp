@@ -2,10 +2,13 @@
 // Yade decks one compares with. Batches of spheres are inserted at random, non-overlapping
 // positions above the pile (random sequential addition at a loose solid fraction, 0.3, inside the
 // cone and in the column above its top opening), each batch falls and settles under gravity with
-// the scene's own contact law, and batches follow until the pile covers the fill height; then the
-// cone is struck off level: every sphere not wholly below the fill height, or outside the cone, is
-// removed. The same protocol at every S_f, so fine and coarse fills are comparable (their solid
-// fraction and coordination number are measured, slump/fill_measures.hpp).
+// the scene's own contact law, and batches follow until the cone holds the fill's mass and a layer
+// more; then the fill is cut to its mass: of the spheres wholly inside the cone, the lowest centres
+// are kept until they weigh the scene's fill_mass (to the nearest sphere). Every S_f's fill holds the
+// same mass; a cut through the centres loses nothing that grows with the radius (striking off every
+// sphere whose top pokes above a level left a coarse fill 5 % lighter at S_f 1.96). A looser coarse
+// packing stands a little higher instead; its fill height is measured and reported
+// (slump/fill_measures.hpp).
 // Between batches the engine is rebuilt with the new spheres: contact history (tangential springs,
 // bridges stretched across a gap) starts afresh there, as it does after the strike-off.
 #pragma once
@@ -18,11 +21,11 @@
 
 namespace demscale::slump {
 
-// Spheres still to insert: 0 once the spheres reaching above the strike level (centre above it less
-// R) hold the solid volume of a layer one diameter thick at a solid fraction of 0.5 over the cone's
-// cross-section there. The first batch is a loose fill's worth (solid fraction 0.45 under the strike
-// level, plus that layer); later ones fill what is missing above the pile's level at the pile's own
-// solid fraction. Little overfill, so little spills over the cone's rim.
+// Solid volume of the spheres wholly inside the cone (under its top, inside its wall), m³.
+double solid_in_cone(const SlumpScene& scene, const dem::Particles& pile);
+
+// Spheres still to insert: what the cone lacks of the fill's volume plus a layer one diameter thick
+// at a solid fraction of 0.5 over its cross-section at the fill height; 0 once it holds that.
 std::size_t pour_batch_size(const SlumpScene& scene, const dem::Particles& pile);
 
 // `count` new spheres (radius and density of the scene) at random positions that overlap neither
@@ -31,10 +34,12 @@ std::size_t pour_batch_size(const SlumpScene& scene, const dem::Particles& pile)
 // opening above it.
 dem::Particles insert_batch(const SlumpScene& scene, const dem::Particles& pile, std::size_t count, unsigned stream);
 
-// The spheres wholly below the fill height and inside the cone.
-dem::Particles strike_off(const SlumpScene& scene, const dem::Particles& pile);
+// Of the spheres wholly inside the cone, those with the lowest centres that weigh fill_mass(scene)
+// to the nearest sphere. Throws std::runtime_error naming the radius when the cone holds less
+// (the pour jammed in the top opening, or the fill does not fit under the cone's top).
+dem::Particles cut_to_mass(const SlumpScene& scene, const dem::Particles& pile);
 
-// Pours and strikes off. settle(pile) runs the engine on the pile with the cone in place until rest
+// Pours and cuts to the fill's mass. settle(pile) runs the engine on the pile with the cone in place until rest
 // (or the scene's pour_time_s) and returns the mobile spheres. At most 8 batches.
 dem::Particles pour_fill(const SlumpScene& scene, const std::function<dem::Particles(dem::Particles)>& settle);
 

@@ -1,5 +1,7 @@
 #include "slump/response_study.hpp"
 
+#include "slump/coarse_grain.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -36,7 +38,7 @@ ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int s
 
 void summarize_ensemble(ResponseEnsemble& e, double bottom_diameter) {
     std::vector<double> s, d;
-    for (const auto& r : e.runs) s.push_back(slump_over_height(r.result)), d.push_back(r.result.final.spread_d95 / bottom_diameter);
+    for (const auto& r : e.runs) s.push_back(slump_over_height(r.result)), d.push_back(r.result.final.spread / bottom_diameter);
     e.slump_over_height = stats::summarize(s);
     e.spread_over_diameter = stats::summarize(d);
 }
@@ -88,6 +90,10 @@ void validate_response_plan(const ResponsePlan& plan) {
     if (plan.scale_factors.empty()) throw InputError("--sf", "(none)", "at least one scale factor > 1");
     for (double sf : plan.scale_factors)
         if (!(sf > 1)) throw InputError("--sf", format_number(sf), "> 1 (the fine scene is S_f = 1)");
+    for (double sf : plan.scale_factors)  // the cone, not the exponent, would shift a geometry-limited curve
+        if (2 * sf * plan.fine.radius_m < plan.fine.top_diameter_m)
+            if (const auto why = geometry_limits(coarse_grained(plan.fine, {sf, 1, {}})); !why.empty())
+                throw InputError("--sf", format_number(sf), "an S_f this scene's cone does not limit (geometry-limited: " + why.front() + ")");
     if (plan.fine.wet) {
         if (plan.factors.size() < 3) throw InputError("--levels", std::to_string(plan.factors.size()), "3 to 12");
         for (std::size_t i = 0; i < plan.factors.size(); ++i)

@@ -3,7 +3,7 @@
 // factors), each an ensemble of seeds; each coarse S_f runs at γ̄_i = f_i·γ·S_f^offset, the same
 // factors moved by a guessed exponent (default 2, between the groups' 1 and 3) so that its levels
 // straddle the fine transition for any k near it. The response is slump over fill height, and the
-// spread d95 over the cone's bottom diameter. k̂ per S_f and jointly: stats/curve_shift.hpp.
+// spread (diameter at half height) over the cone's bottom diameter. k̂ per S_f and jointly: stats/curve_shift.hpp.
 // A dry scene has no cohesion to vary: its one level per S_f is the dry control, the coarse −
 // fine difference that no exponent can remove.
 #pragma once

@@ -38,6 +38,7 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
         {"lift_height", s.lift_height_m, true, into(&SlumpScene::lift_height_m)},
         {"radius", s.radius_m, true, into(&SlumpScene::radius_m)},
         {"fill", s.fill_height_m, true, into(&SlumpScene::fill_height_m)},
+        {"fill_solid_fraction", s.fill_solid_fraction, true, into(&SlumpScene::fill_solid_fraction)},
         {"seed", static_cast<double>(s.seed), true, into(&SlumpScene::seed)},
         {"density", s.material.density, true, [](SlumpScene& t, double v) { t.material.density = v; }},
         {"rough_floor", s.rough_floor_diameter_m, s.rough_floor,

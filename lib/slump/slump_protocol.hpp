@@ -173,13 +173,13 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         st.settle_end = sim.time();
         const Particles settled = sim.in_input_order();  // what is reported is measured in the input's order
         if (phases.fill_measures) st.fill = measure_fill(settled, s);
-        st.initial_height = measure_pile(settled, lone_sphere_top(s)).height;
+        st.initial_height = measure_pile(settled, s).height;
         if (phases.settle_only) {
             res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
             res.motion = summarize_motion(settled, res.particles, s.rest_speed_m_per_s);
             res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
             res.steps = sim.steps();
-            res.final = measure_pile(settled, lone_sphere_top(s));
+            res.final = measure_pile(settled, s);
             res.final_state = settled.mobile();
             res.wall_s = wall_time();
             return res;
@@ -207,7 +207,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
     res.end = sim.time();
     res.steps = sim.steps();
-    res.final = measure_pile(end_state, lone_sphere_top(s));
+    res.final = measure_pile(end_state, s);
     res.final_state = end_state.mobile();
     res.windows_all_threads = sim.governor().windows(true), res.windows_one_thread = sim.governor().windows(false);
     res.wall_s = wall_time();

@@ -18,13 +18,13 @@ std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<cons
     std::map<std::string, std::vector<std::string_view>> schema = {
         {"scene", {"name"}},
         {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
-        {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "seed", "fill"}},
+        {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "fill_solid_fraction", "seed", "fill"}},
         {"floor", {"rough", "rough_diameter_mm"}},
         {"contact", {"rolling_resistance", "rolling_model"}},
         {"liquid", {"wet", "wet_walls", "bridge_variant", "wall_bridge", "rupture"}},
         {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s",
                  "rest_duration_s", "rest_quantile", "skin_mm"}},
-        {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance"}},
+        {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance", "min_opening_diameters", "min_fill_diameters", "min_particles"}},
         {"similarity", {"scale_factors", "exponents"}},
     };
     for (const auto& part : parts)
@@ -51,6 +51,8 @@ double cone_volume_below(const SlumpScene& s, double z) {  // frustum: Ï€ z (râ‚
     return M_PI * z * (r0 * r0 + r0 * rz + rz * rz) / 3;
 }
 
+double fill_mass(const SlumpScene& s) { return s.material.density * s.fill_solid_fraction * cone_volume_below(s, s.fill_height_m); }
+
 SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPart> parts) {
     const io::TomlReader r(path, scene_schema(parts));
     SlumpScene s;
@@ -66,6 +68,9 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     s.radius_m = r.checked("particles.radius_mm", 1.0, positive) * mm;
     s.material.density = r.checked("particles.density_kg_per_m3", 2200, positive);
     s.fill_height_m = r.checked("particles.fill_height_mm", 54, positive) * mm;
+    s.fill_solid_fraction = r.checked("particles.fill_solid_fraction", 0.5, [](double x, const std::string& f) {
+        if (!(x >= 0.2 && x <= 0.64)) throw InputError(f, format_number(x), "[0.2, 0.64] (a poured fill's solid fraction, loose to random close)");
+    });
     s.seed = static_cast<unsigned>(r.checked("particles.seed", 1, [](double x, const std::string& f) {
         if (!(x >= 0 && x < 4294967296.0 && std::floor(x) == x)) throw InputError(f, format_number(x), "an integer in [0, 2^32)");
     }));
@@ -143,6 +148,12 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     s.tolerances.slump = r.checked("check.slump_tolerance", 0.10, positive);
     s.tolerances.spread = r.checked("check.spread_tolerance", 0.10, positive);
     s.tolerances.profile = r.checked("check.profile_tolerance", 0.15, positive);
+    auto at_least_one = [](double x, const std::string& f) {
+        if (!(x >= 1 && x < 1e9)) throw InputError(f, format_number(x), "[1, 1e9)");
+    };
+    s.limits.opening_diameters = r.checked("check.min_opening_diameters", 4, at_least_one);
+    s.limits.fill_diameters = r.checked("check.min_fill_diameters", 8, at_least_one);
+    s.limits.particles = r.checked("check.min_particles", 200, at_least_one);
     auto number_list = [&](const std::string& key, std::vector<double>& out, double lo, double hi) {
         const auto xs = r.numbers(key);
         if (!xs) return;

@@ -20,11 +20,21 @@ struct Tolerances {
     double profile = 0.15;  // ‖h̄ − h‖₂ / ‖h‖₂ over the radius
 };
 
+// Below these an S_f is geometry-limited (slump/coarse_grain.hpp): the cone, not the contact law,
+// decides what its runs do, so they judge no exponent. The cone's top opening in particle
+// diameters (the pour jams in it at 3.5 and 2.5 diameters in the reference scene and passes at 4.9),
+// the fill height in diameters, and the spheres in one fill.
+struct GeometryLimits {
+    double opening_diameters = 4;
+    double fill_diameters = 8;
+    double particles = 200;
+};
+
 using RollingModel = dem::RollingModel;
 
 // How the cone is filled. poured: spheres inserted at random in batches and settled under gravity,
-// then struck off level with the fill height (slump/pour.hpp), the default; lattice: a jittered hcp
-// lattice cut to the cone (slump/fill.hpp), denser and crystalline, kept for comparison.
+// then cut to the fill's mass (slump/pour.hpp), the default; lattice: a jittered hcp lattice in the
+// cone cut to the same mass (slump/fill.hpp), denser and crystalline, kept for comparison.
 enum class FillKind { poured, lattice };
 
 // The scene: its contact laws with their parameters (dem::ContactSettings), geometry and protocol.
@@ -38,6 +48,9 @@ struct SlumpScene : dem::ContactSettings {
     // Particles (monodisperse).
     double radius_m = 1e-3;
     double fill_height_m = 0.054;
+    // The fill's solid mass is this solid fraction of the cone's volume below fill_height_m, at the
+    // particles' density: the same at every S_f (fill_mass).
+    double fill_solid_fraction = 0.5;
     unsigned seed = 1;
     FillKind fill = FillKind::poured;
     // Floor: a flat plane, or rough: one layer of fixed spheres of the fill's radius, centres on the
@@ -55,6 +68,7 @@ struct SlumpScene : dem::ContactSettings {
     double rest_quantile = 0.99;
     double skin_m = 0.3e-3;
     Tolerances tolerances;
+    GeometryLimits limits;
     // The similarity table and Figs. 3-4 this scene implies (table, curves, regress, report):
     // the coarse radii S_f·R of Table 1 (S_f = 1.4^n) and the candidate exponents k of γ̄ = γ·S_f^k.
     std::vector<double> table_scale_factors{3.8416, 2.744, 1.96, 1.4, 1.0};
@@ -68,6 +82,9 @@ double bridge_vhat(const SlumpScene& scene);
 // The cone's inner radius at height z above the floor, m, and the volume inside it below z, m³.
 double cone_radius_at(const SlumpScene& scene, double z);
 double cone_volume_below(const SlumpScene& scene, double z);
+
+// The solid mass every fill of the scene holds, kg: ρ_s φ_fill V_cone(fill height), whatever the radius.
+double fill_mass(const SlumpScene& scene);
 
 // Throws InputError (file, line, key, value, accepted range) for a bad scene. The law parts'
 // parameters are read from their tables (parts: the registered ones, dem/law_parts.hpp).

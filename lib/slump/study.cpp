@@ -14,6 +14,13 @@ stats::Verdict Study::overall() const {
     return v.empty() ? stats::Verdict::inconclusive : stats::combine(v);
 }
 
+std::vector<double> Study::judged_scale_factors() const {
+    std::vector<double> sfs;
+    for (const auto& v : verdicts)
+        if (std::find(sfs.begin(), sfs.end(), v.sf) == sfs.end()) sfs.push_back(v.sf);
+    return sfs;
+}
+
 std::vector<const SlumpResult*> Study::fine_ensemble() const {
     std::vector<const SlumpResult*> f = {&reference.result};
     for (const auto& r : replicas) f.push_back(&r.result);
@@ -64,8 +71,15 @@ Study plan_study(const StudyPlan& plan) {
         return r;
     };
     for (int i = 1; i < plan.seeds; ++i) study.replicas.push_back(with_seed(study.reference, i));
+    for (double sf : plan.scale_factors)
+        if (auto reasons = geometry_limits(coarse_grained(plan.fine, {sf, 1, plan.scaled})); !reasons.empty())
+            study.limited.push_back({sf, std::move(reasons)});
+    auto limited = [&](double sf) {
+        return std::any_of(study.limited.begin(), study.limited.end(), [&](const LimitedScale& l) { return l.sf == sf; });
+    };
     for (double k : plan.exponents)
         for (double sf : plan.scale_factors) {
+            if (limited(sf)) continue;
             StudyRun r;
             r.grain = {sf, k, plan.scaled};
             r.scene = coarse_grained(plan.fine, r.grain);

@@ -32,17 +32,27 @@ struct StudyPlan {
     std::optional<SlurmSettings> slurm;            // hand the runs to Slurm (BatchOptions::slurm)
 };
 
+// An S_f the study did not run: its coarse scene is geometry-limited (slump/coarse_grain.hpp).
+struct LimitedScale {
+    double sf = 1;
+    std::vector<std::string> reasons;
+};
+
 struct Study {
+    std::vector<LimitedScale> limited;  // in the plan's order; no runs, no verdict
     StudyRun reference;                 // the fine run with the scene's own seed
     std::vector<StudyRun> replicas;     // the fine runs with the other seeds
-    std::vector<StudyRun> runs;         // coarse runs with the scene's seed: exponent-major, then S_f in the plan's order
+    std::vector<StudyRun> runs;         // coarse runs with the scene's seed: exponent-major, then the judged S_f in the plan's order
     std::vector<StudyRun> coarse_seeds; // coarse runs with the other seeds, in the same order, seed-minor
     std::vector<EnsembleVerdict> verdicts;  // one per entry of runs
     FineReference fine;                 // the fine ensemble's means and mean shape
     NoiseFloor noise;                   // the fine ensemble's own spread
     Tolerances tolerances;
     double wall_s = 0;                  // this call's wall time (cached runs cost nothing)
-    stats::Verdict overall() const;     // FAIL if any ensemble fails, else INCONCLUSIVE if any is, else PASS
+    // Over the judged ensembles (geometry-limited S_f have none): FAIL if any fails, else INCONCLUSIVE
+    // if any is, else PASS; INCONCLUSIVE when no S_f could be judged.
+    stats::Verdict overall() const;
+    std::vector<double> judged_scale_factors() const;  // the S_f with verdicts, in the plan's order
     std::vector<const SlumpResult*> fine_ensemble() const;
     std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds
     std::vector<StudyRun*> all_runs();  // reference, replicas, runs, coarse_seeds

@@ -1,5 +1,5 @@
 // The poured fill, the fill measures and the rest criterion: insertion without overlaps inside the
-// cone, the strike-off, the solid fraction of a poured dry fill against the random loose-to-dense
+// cone, the cut to the fill's mass, the solid fraction of a poured dry fill against the random loose-to-dense
 // packing range, measures against constructed lattices (hand counts, closed-form fractions), and a
 // damped scene that comes to rest by the quantile criterion.
 #include <catch2/catch.hpp>
@@ -53,17 +53,30 @@ TEST_CASE("Insertion: the asked count, no overlaps, inside the cone and its top 
     CHECK(insert_batch(other, {}, 300, 0).position[123] != pile.position[123]);
 }
 
-TEST_CASE("Strike-off keeps the spheres wholly below the fill height and inside the cone", "[slump][pour]") {
+TEST_CASE("Cut to mass: the lowest centres inside the cone, to the fill's mass within half a sphere, short fills refused",
+          "[slump][pour]") {
     const auto s = wide_cone(false);
+    const double r = s.radius_m, m = s.material.density * 4.0 / 3.0 * M_PI * r * r * r;
+    // A column of spheres up the axis, one through the wall and one outside: by hand, the target
+    // (ρ φ V below the fill height) is so many spheres; the lowest that many are kept.
+    const auto want = static_cast<std::size_t>(std::floor(fill_mass(s) / m + 0.5));
     dem::Particles p;
-    const double r = s.radius_m;
-    p.add({0, 0, s.fill_height_m - r}, r, 2500);         // top exactly at the level: kept
-    p.add({0, 0, s.fill_height_m - 0.5 * r}, r, 2500);   // pokes above: removed
-    p.add({0.0195, 0, 0.002}, r, 2500);                  // through the wall: removed
-    p.add({0.030, 0, r}, r, 2500);                       // spilled outside: removed
-    const auto kept = strike_off(s, p);
-    REQUIRE(kept.size() == 1);
-    CHECK(kept.position[0].z() == Approx(s.fill_height_m - r));
+    p.add({0.0195, 0, 0.002}, r, s.material.density);  // through the wall: never kept
+    p.add({0.030, 0, r}, r, s.material.density);       // outside: never kept
+    for (std::size_t i = 0; i < want + 40; ++i) {     // a helix, clear of the wall, rising 0.015 R a sphere
+        const double a = 0.7 * static_cast<double>(i), z = r + 0.015 * r * static_cast<double>(want + 40 - i);
+        p.add({0.012 * std::cos(a), 0.012 * std::sin(a), z}, r, s.material.density);
+    }
+    const auto kept = cut_to_mass(s, p);
+    REQUIRE(kept.size() == want);
+    double mass = 0, highest = 0;
+    for (std::size_t i = 0; i < kept.size(); ++i) mass += kept.mass[i], highest = std::max(highest, kept.position[i].z());
+    CHECK(std::abs(mass - fill_mass(s)) <= 0.5 * m);
+    CHECK(highest == Approx(r + 0.015 * r * static_cast<double>(want)));  // the 40 highest went
+    // Fewer spheres than the target: refused, naming the radius and the shortfall.
+    dem::Particles few;
+    few.add({0, 0, r}, r, s.material.density);
+    CHECK_THROWS_WITH(cut_to_mass(s, few), Catch::Contains("short of the fill") && Catch::Contains("1.5 mm"));
 }
 
 TEST_CASE("Fill measures of constructed lattices: closed-form solid fraction, hand-counted contacts", "[slump][fill]") {
@@ -126,7 +139,7 @@ TEST_CASE("Poured dry fill: random loose-to-dense packing in the core, small ove
     CHECK(r.fill.max_overlap < 0.05);          // Hertz at this weight: about 1 % of R
     CHECK(r.fill.coordination > 3.0);          // frictional packings: 4-6 (rattlers lower the mean)
     CHECK(r.fill.coordination < 7.0);
-    CHECK(r.fill.top <= s.fill_height_m + 1e-9);  // struck off level
+    CHECK(r.fill.mass == Approx(fill_mass(s)).margin(0.5 * s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3)));
     CHECK(r.pour_time > 0);
     CHECK(r.settled);                          // the struck-off fill rests before the lift
     CHECK(r.came_to_rest);                     // with the rolling dashpot the pile rests too

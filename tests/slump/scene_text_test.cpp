@@ -110,7 +110,8 @@ TEST_CASE("Scene text: an altered, foreign or malformed text is refused, naming 
     other.replace(other.find(version), std::string(version).size(), "0.0.0-other");
     refused(other, "x.scene:1");
     std::string format = text;
-    format.replace(format.find("cache="), 7, "cache=1");
+    const auto cache_at = format.find("cache=");
+    format.replace(cache_at, format.find('\n', cache_at) - cache_at, "cache=1");
     refused(format, "x.scene:2");
     // A value that is not a number.
     std::string bad = text;

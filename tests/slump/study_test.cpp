@@ -29,7 +29,7 @@ SlumpResult triangle(double H, double w, double slump, double d95) {
     for (double c = 0.5 * w; c < H + w; c += w) r.final.profile.push_back({c, std::max(0.0, H - c)});
     r.initial_height = 0.05;
     r.final.height = 0.05 - slump;
-    r.final.spread_d95 = d95;
+    r.final.spread = d95;
     r.final.spread_max = d95;
     return r;
 }
@@ -115,7 +115,7 @@ TEST_CASE("Run comparison against the fine ensemble on constructed profiles: kno
         auto lower = fine;
         for (auto& p : lower.final.profile) p.height *= 0.8;
         lower.final.height = 0.05 - 0.025;
-        lower.final.spread_d95 = 0.11;
+        lower.final.spread = 0.11;
         const auto c = compare_to(ref, lower);
         CHECK(c.profile_error == Approx(0.2).epsilon(1e-12));
         CHECK(c.slump_error == Approx(0.1).epsilon(1e-12));  // 25/50 against 20/50 of the fill height
@@ -157,7 +157,11 @@ TEST_CASE("Profile distance of two constructed piles of one shape at different S
             }
         }
         for (double rho = base + 0.005; rho < base + 0.03; rho += 0.005) p.add({rho, 0, r}, r, 2500);
-        return measure_pile(p, 2 * r);
+        // The rules act on whatever profile a pile carries; they were made for the sphere-top profile
+        // (highest top per 2R bin), where a fringe and empty bins arise, so the test feeds that one.
+        auto m = measure_pile(p, 2 * r, {1e-3, 5e-3});
+        m.profile = m.profile_tops;
+        return m;
     };
     SlumpResult fine, coarse;
     fine.final = pile(1e-3), coarse.final = pile(2e-3);
@@ -220,10 +224,9 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
 }
 
 TEST_CASE("Replacement conserves mass and liquid: coarse fills of the cone against the fine one", "[slump][coarse][fill]") {
-    // Same cone, same fill height: the bulk mass differs only by how the lattice is cut at the
-    // cone wall and the top (a layer of about one radius, thicker for larger particles). Hand
-    // estimate of that boundary loss for the Kantro cone (surface ≈ 6 000 mm², volume ≈ 36 000 mm³):
-    // about (S_f − 1) R · 6 000 / 36 000, i.e. 7 % at S_f = 1.4 and 16 % at 1.96 relative to S_f = 1.
+    // Same cone, same fill mass: every fill is cut to ρ φ_fill V(fill height), so a coarse fill weighs
+    // what the fine one does to half a coarse sphere (a cut by the sphere tops lost a boundary layer
+    // about one radius thick, 7 % at S_f 1.4 and 16 % at 1.96 on the lattice).
     const auto fine = kantro();
     const auto fill_f = fill_cone(fine);
     auto mass = [](const dem::Particles& p) {
@@ -236,8 +239,8 @@ TEST_CASE("Replacement conserves mass and liquid: coarse fills of the cone again
         const auto fill_c = fill_cone(coarse);
         const double ratio = mass(fill_c) / mass(fill_f);
         INFO("S_f = " << sf << ", mass ratio " << ratio << ", particles " << fill_c.size() << " vs " << fill_f.size());
-        CHECK(ratio < 1.0);
-        CHECK(ratio > 1.0 - 0.25 * (sf - 1));  // within the boundary-layer estimate above (+50 % margin)
+        CHECK(std::abs(mass(fill_c) - fill_mass(fine)) <= 0.5 * fill_c.mass[0]);
+        CHECK(std::abs(ratio - 1.0) <= fill_c.mass[0] / mass(fill_f));
         // Liquid per bridge (Eq. 5) follows the mass: V̄ = S_f³ V, so V̂ = V/R³ is unchanged and the
         // total liquid φ·m/ρ_l follows the same ratio as the mass.
         const double v_f = bridge::liquid_bridge_volume(fine.liquid.moisture_content, fill_f.mass[0], fine.liquid.density_kg_per_m3);
