@@ -175,7 +175,11 @@ std::function<void(int, int)> progress_printer(const std::string& what) {
 std::vector<double> scale_factors_or_usable(const std::string& given, const slump::SlumpScene& fine) {
     if (!given.empty()) return parse_number_list(given, "--sf", 0, 100);
     const auto usable = slump::usable_scale_factors(fine, slump::table1_scale_factors);
-    return usable.empty() ? slump::table1_scale_factors : usable;
+    if (!usable.empty()) return usable;
+    std::vector<double> passing;  // none usable: those the study can name as geometry-limited
+    for (double sf : slump::table1_scale_factors)
+        if (slump::passes_opening(fine, sf)) passing.push_back(sf);
+    return passing;
 }
 
 }  // namespace demscale::cli

@@ -62,8 +62,8 @@ inline const CLI::Validator finite_non_negative = finite_from_zero(true);
 // "1,3" → {1, 3}; every item a number in (lo, hi). Throws InputError naming `field` and the range.
 std::vector<double> parse_number_list(const std::string& text, const std::string& field, double lo, double hi);
 // --sf as given, or, when empty, the S_f of Table 1 (1.4, 1.96, 2.74, 3.84) whose coarse scene the
-// fine scene's cone does not limit (slump/coarse_grain.hpp); all four when it limits every one, so
-// that the command says why.
+// fine scene's cone does not limit (slump/coarse_grain.hpp); when it limits every one, those whose
+// particles pass the top opening, so that the command says why each is limited.
 std::vector<double> scale_factors_or_usable(const std::string& given, const slump::SlumpScene& fine);
 // "LO,HI" and a level count → the log-spaced surface tension factors (slump::log_spaced_factors).
 std::vector<double> parse_factor_range(const std::string& text, int levels, const std::string& range_field,

@@ -69,7 +69,11 @@ std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t part
     return below(s, static_cast<double>(particles), {5, 10, 200});
 }
 
-std::vector<std::string> geometry_limits(const SlumpScene& s) {
+bool passes_opening(const SlumpScene& fine, double sf) { return 2 * sf * fine.radius_m < fine.top_diameter_m; }
+
+std::vector<std::string> geometry_limits(const SlumpScene& fine, double sf) {
+    if (!passes_opening(fine, sf)) return {"particles " + format_short(2 * sf * fine.radius_m * 1e3, 3) + " mm across do not pass the top opening"};
+    const auto s = coarse_grained(fine, {sf, 1, {}});  // the limits depend on the radius, not on k
     const double sphere = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
     return below(s, std::floor(fill_mass(s) / sphere + 0.5), s.limits);
 }
@@ -77,7 +81,7 @@ std::vector<std::string> geometry_limits(const SlumpScene& s) {
 std::vector<double> usable_scale_factors(const SlumpScene& fine, const std::vector<double>& candidates) {
     std::vector<double> usable;
     for (double sf : candidates)
-        if (2 * sf * fine.radius_m < fine.top_diameter_m && geometry_limits(coarse_grained(fine, {sf, 1, {}})).empty()) usable.push_back(sf);
+        if (geometry_limits(fine, sf).empty()) usable.push_back(sf);
     return usable;
 }
 

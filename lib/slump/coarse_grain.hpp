@@ -27,10 +27,14 @@ SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c);
 // across the cone's top opening, a fill fewer than ten diameters high, or fewer than 200 particles.
 std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t particles);
 
-// Why the scene is geometry-limited (none: it is usable): its top opening, fill height in particle
-// diameters or spheres per fill (fill_mass over one sphere's) below the scene's [check] limits.
-// A geometry-limited S_f is neither PASS nor FAIL of an exponent: the cone decides what its runs do.
-std::vector<std::string> geometry_limits(const SlumpScene& s);
+// Whether particles of radius S_f·R pass the fine scene's top opening (2 S_f R < its diameter).
+bool passes_opening(const SlumpScene& fine, double sf);
+
+// Why S_f is geometry-limited in the fine scene's cone (none: it is usable): the coarse particles'
+// top opening, fill height in diameters or spheres per fill (fill_mass over one sphere's) below the
+// scene's [check] limits, or particles that do not pass the opening at all. A geometry-limited S_f
+// is neither PASS nor FAIL of an exponent: the cone decides what its runs do.
+std::vector<std::string> geometry_limits(const SlumpScene& fine, double sf);
 
 // The candidates whose coarse scene is not geometry-limited, in their order.
 std::vector<double> usable_scale_factors(const SlumpScene& fine, const std::vector<double>& candidates);

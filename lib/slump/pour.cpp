@@ -34,14 +34,15 @@ bool inside_cone(const SlumpScene& s, const dem::Vec3& x, double r) {
     return x.z() + r <= s.height_m && std::hypot(x.x(), x.y()) + r <= cone_radius_at(s, std::max(x.z(), 0.0)) + 1e-9 * r;
 }
 
-}  // namespace
-
+// Solid volume of the spheres wholly inside the cone, m³.
 double solid_in_cone(const SlumpScene& s, const dem::Particles& pile) {
     double v = 0;
     for (std::size_t i = 0; i < pile.size(); ++i)
         if (inside_cone(s, pile.position[i], pile.radius[i])) v += sphere_volume(pile.radius[i]);
     return v;
 }
+
+}  // namespace
 
 std::size_t pour_batch_size(const SlumpScene& s, const dem::Particles& pile) {
     const double r = s.radius_m, vp = sphere_volume(r);

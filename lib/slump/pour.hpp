@@ -21,9 +21,6 @@
 
 namespace demscale::slump {
 
-// Solid volume of the spheres wholly inside the cone (under its top, inside its wall), m³.
-double solid_in_cone(const SlumpScene& scene, const dem::Particles& pile);
-
 // Spheres still to insert: what the cone lacks of the fill's volume plus a layer one diameter thick
 // at a solid fraction of 0.5 over its cross-section at the fill height; 0 once it holds that.
 std::size_t pour_batch_size(const SlumpScene& scene, const dem::Particles& pile);

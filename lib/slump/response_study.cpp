@@ -91,9 +91,8 @@ void validate_response_plan(const ResponsePlan& plan) {
     for (double sf : plan.scale_factors)
         if (!(sf > 1)) throw InputError("--sf", format_number(sf), "> 1 (the fine scene is S_f = 1)");
     for (double sf : plan.scale_factors)  // the cone, not the exponent, would shift a geometry-limited curve
-        if (2 * sf * plan.fine.radius_m < plan.fine.top_diameter_m)
-            if (const auto why = geometry_limits(coarse_grained(plan.fine, {sf, 1, {}})); !why.empty())
-                throw InputError("--sf", format_number(sf), "an S_f this scene's cone does not limit (geometry-limited: " + why.front() + ")");
+        if (const auto why = geometry_limits(plan.fine, sf); !why.empty())
+            throw InputError("--sf", format_number(sf), "an S_f this scene's cone does not limit (geometry-limited: " + why.front() + ")");
     if (plan.fine.wet) {
         if (plan.factors.size() < 3) throw InputError("--levels", std::to_string(plan.factors.size()), "3 to 12");
         for (std::size_t i = 0; i < plan.factors.size(); ++i)

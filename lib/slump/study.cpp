@@ -71,15 +71,12 @@ Study plan_study(const StudyPlan& plan) {
         return r;
     };
     for (int i = 1; i < plan.seeds; ++i) study.replicas.push_back(with_seed(study.reference, i));
+    std::vector<double> judged;
     for (double sf : plan.scale_factors)
-        if (auto reasons = geometry_limits(coarse_grained(plan.fine, {sf, 1, plan.scaled})); !reasons.empty())
-            study.limited.push_back({sf, std::move(reasons)});
-    auto limited = [&](double sf) {
-        return std::any_of(study.limited.begin(), study.limited.end(), [&](const LimitedScale& l) { return l.sf == sf; });
-    };
+        if (auto reasons = geometry_limits(plan.fine, sf); reasons.empty()) judged.push_back(sf);
+        else study.limited.push_back({sf, std::move(reasons)});
     for (double k : plan.exponents)
-        for (double sf : plan.scale_factors) {
-            if (limited(sf)) continue;
+        for (double sf : judged) {
             StudyRun r;
             r.grain = {sf, k, plan.scaled};
             r.scene = coarse_grained(plan.fine, r.grain);

@@ -57,9 +57,12 @@ TEST_CASE("Cut to mass: the lowest centres inside the cone, to the fill's mass w
           "[slump][pour]") {
     const auto s = wide_cone(false);
     const double r = s.radius_m, m = s.material.density * 4.0 / 3.0 * M_PI * r * r * r;
-    // A column of spheres up the axis, one through the wall and one outside: by hand, the target
-    // (ρ φ V below the fill height) is so many spheres; the lowest that many are kept.
-    const auto want = static_cast<std::size_t>(std::floor(fill_mass(s) / m + 0.5));
+    // A helix of spheres, one through the wall and one outside: by hand, the target ρ φ V (V the
+    // frustum below the fill height, radii 20 mm at the floor and 20 − 2 × 25/30 mm there) is so many
+    // spheres; the lowest that many are kept.
+    const double r0 = 0.020, rz = 0.020 - 0.002 * 0.025 / 0.030, target = s.material.density * 0.5 * M_PI * 0.025 * (r0 * r0 + r0 * rz + rz * rz) / 3;
+    CHECK(fill_mass(s) == Approx(target));
+    const auto want = static_cast<std::size_t>(std::floor(target / m + 0.5));
     dem::Particles p;
     p.add({0.0195, 0, 0.002}, r, s.material.density);  // through the wall: never kept
     p.add({0.030, 0, r}, r, s.material.density);       // outside: never kept
@@ -71,7 +74,7 @@ TEST_CASE("Cut to mass: the lowest centres inside the cone, to the fill's mass w
     REQUIRE(kept.size() == want);
     double mass = 0, highest = 0;
     for (std::size_t i = 0; i < kept.size(); ++i) mass += kept.mass[i], highest = std::max(highest, kept.position[i].z());
-    CHECK(std::abs(mass - fill_mass(s)) <= 0.5 * m);
+    CHECK(std::abs(mass - target) <= 0.5 * m);
     CHECK(highest == Approx(r + 0.015 * r * static_cast<double>(want)));  // the 40 highest went
     // Fewer spheres than the target: refused, naming the radius and the shortfall.
     dem::Particles few;

@@ -16,6 +16,7 @@
 #include "slump/fill.hpp"
 #include "slump/response_study.hpp"
 #include "slump/run_cache.hpp"
+#include "slump/study.hpp"
 
 using namespace demscale;
 using namespace demscale::slump;
@@ -75,6 +76,37 @@ TEST_CASE("Geometry warnings: opening, height and count thresholds", "[slump][co
     REQUIRE(w.size() == 3);  // 19 / 5.48 = 3.5 across, 54 / 5.48 = 9.9 high, 150 particles
     CHECK_THAT(w[0], Catch::Matchers::Contains("3.5 diameters wide"));
     CHECK_THAT(w[1], Catch::Matchers::Contains("9.9 diameters high"));
+}
+
+TEST_CASE("Geometry limits: Table 1's S_f in the reference cone, by hand, and a study runs only the usable ones",
+          "[slump][coarse]") {
+    const auto fine = kantro();
+    // Fill: 0.5 of the frustum below 54 mm (radii 19 and 10 mm), 18 407 mm³ of solid. At S_f 2.74:
+    // 19 / 5.48 = 3.5 diameters across (< 4), 54 / 5.48 = 9.9 high, 214 spheres; at 3.84: 2.5 across,
+    // 7.0 high (< 8), 78 spheres (< 200); 1.4 and 1.96 (6.8 and 4.8 across, 1 601 and 584 spheres) pass.
+    CHECK(usable_scale_factors(fine, table1_scale_factors) == std::vector<double>{1.4, 1.96});
+    const auto at_274 = geometry_limits(fine, 2.74);
+    REQUIRE(at_274.size() == 1);
+    CHECK_THAT(at_274[0], Catch::Matchers::Contains("3.5 diameters wide (< 4)"));
+    const auto at_384 = geometry_limits(fine, 3.84);
+    REQUIRE(at_384.size() == 3);
+    CHECK_THAT(at_384[1], Catch::Matchers::Contains("7 diameters high (< 8)"));
+    CHECK_THAT(at_384[2], Catch::Matchers::Contains("78 particles (< 200)"));
+    CHECK_THAT(geometry_limits(fine, 10).at(0), Catch::Matchers::Contains("do not pass the top opening"));
+    auto lowered = fine;  // a scene's own limits decide
+    lowered.limits.opening_diameters = 3;
+    CHECK(geometry_limits(lowered, 2.74).empty());
+
+    StudyPlan plan;
+    plan.fine = fine, plan.scale_factors = {1.4, 2.74}, plan.exponents = {1, 3}, plan.seeds = 2;
+    const auto study = plan_study(plan);
+    REQUIRE(study.limited.size() == 1);
+    CHECK(study.limited[0].sf == 2.74);
+    REQUIRE(study.runs.size() == 2);  // k = 1 and 3 at S_f 1.4 only
+    CHECK(study.runs[0].grain.sf == 1.4);
+    CHECK(study.runs[1].grain.sf == 1.4);
+    CHECK(study.coarse_seeds.size() == 2);
+    CHECK(study.overall() == stats::Verdict::inconclusive);  // nothing judged yet: neither PASS nor FAIL
 }
 
 TEST_CASE("Similarity groups of an exponent: hand-derived S_f powers", "[similarity][exponent]") {
