@@ -15,6 +15,10 @@ namespace demscale::dem {
 // constant_torque: Ai et al.'s model A (LIGGGHTS' cdt).
 enum class RollingModel { epsd, epsd2, constant_torque };
 
+// The liquid bridge's normal lubrication: Pitois et al.'s (2000) finite-volume form, or the
+// unbounded 6π μ R*² v / s that LIGGGHTS' easo/capillary/viscous uses (dem/laws/cohesion.hpp).
+enum class Lubrication { unbounded, finite_volume };
+
 struct ContactSettings {
     Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0.3};  // η_r = 0.3: Ai's dashpot (epsd)
     bool rolling_resistance = true;
@@ -27,6 +31,7 @@ struct ContactSettings {
     bridge::CurveSource wall_curve = bridge::CurveSource::exact;    // wall_bridge = "mikami1998": fit
     double viscosity_pa_s = 0;    // the liquid's μ for the bridge's viscous part; 0: static bridge only
     double min_gap_ratio = 0.01;  // s_min / R, the roughness gap of touching surfaces (viscous part)
+    Lubrication lubrication = Lubrication::finite_volume;  // liquid.lubrication
     double cohesion_energy_density = 0;  // k_c, J/m³, of the simplified JKR adhesion (dry scenes); 0: none
 };
 

@@ -29,6 +29,10 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
     say("bridges to the floor and cone", !s.wet_walls                                 ? "no"
                                          : s.wall_curve == bridge::CurveSource::exact ? "yes, the exact sphere-plane bridge (table)"
                                                                                       : "yes, Mikami's sphere-wall fit (mikami1998)");
+    if (s.wet && s.viscosity_pa_s > 0)
+        say("normal lubrication", s.lubrication == dem::Lubrication::finite_volume
+                                      ? "finite volume (Pitois et al. 2000): squeezed out to the meniscus"
+                                      : "unbounded 6 pi mu R*^2 v / s (LIGGGHTS' easo/capillary/viscous)");
     // Each part that acts, with its parameters as its table states them.
     for (const auto& part : parts)
         if (part.active(s))

@@ -127,7 +127,12 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
             " deg so that LIGGGHTS' pair angle theta_i theta_j / 2 (rad) equals the scene's " +
             format_short(sc.liquid.contact_angle.degrees(), 3) + " deg",
         "viscous part: fluidViscosity = " + format_short(sc.viscosity_pa_s) +
-            " Pa s (0: off); minSeparationDistanceRatio = s_min / R* = 2 x liquid.min_gap_ratio",
+            " Pa s (0: off); minSeparationDistanceRatio = s_min / R* = 2 x liquid.min_gap_ratio; normal lubrication "
+            "UNBOUNDED, 6 pi mu R*^2 v / s (LIGGGHTS has no finite-volume factor)" +
+            (sc.viscosity_pa_s > 0 && sc.lubrication == dem::Lubrication::finite_volume
+                 ? std::string("; the demscale scene uses Pitois et al.'s finite-volume form: set liquid.lubrication = \"unbounded\" "
+                               "to compare like with like")
+                 : std::string("")),
         "liquid: carried per particle and shared evenly again at rupture (equal spheres: nothing moves); demscale gives every bridge V",
     };
     if (sc.wet_walls) w.notes.push_back("walls DRY here: easo/capillary/viscous refuses walls; the demscale scene has wet walls");

@@ -45,7 +45,8 @@ bridge::BridgeCurve wall_bridge_curve(const SlumpScene& s) {
 dem::CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius) {
     // The wall curve goes in through the constructor, which computes the contact forces from it.
     return {particle_bridge_curve(s), largest_radius, s.liquid.surface_tension_n_per_m,
-            s.wet_walls ? std::optional(wall_bridge_curve(s)) : std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m};
+            s.wet_walls ? std::optional(wall_bridge_curve(s)) : std::nullopt, s.viscosity_pa_s, s.min_gap_ratio * s.radius_m,
+            s.lubrication, bridge_vhat(s)};
 }
 
 std::string bridge_variant_name(const SlumpScene& s) {

@@ -56,6 +56,8 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
         // fitted scenes stayed as they were. Absent means the fit.
         {"particle_curve_exact", 1, s.wet && s.particle_curve == bridge::CurveSource::exact,
          [](SlumpScene& t, double) { t.particle_curve = bridge::CurveSource::exact; }},
+        {"lubrication", static_cast<double>(s.lubrication), s.wet && s.viscosity_pa_s > 0,
+         [](SlumpScene& t, double v) { t.lubrication = as<dem::Lubrication>(v); }},
         {"wall_curve_exact", 1, s.wet && s.wet_walls && s.wall_curve == bridge::CurveSource::exact,
          [](SlumpScene& t, double) { t.wall_curve = bridge::CurveSource::exact; }},
     };

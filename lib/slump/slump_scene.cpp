@@ -21,7 +21,7 @@ std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<cons
         {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "fill_solid_fraction", "seed", "fill"}},
         {"floor", {"rough", "rough_diameter_mm"}},
         {"contact", {"rolling_resistance", "rolling_model"}},
-        {"liquid", {"wet", "wet_walls", "bridge_variant", "wall_bridge", "rupture"}},
+        {"liquid", {"wet", "wet_walls", "bridge_variant", "wall_bridge", "rupture", "lubrication"}},
         {"run", {"dt_s", "gravity_m_per_s2", "settle_time_s", "spread_time_s", "pour_time_s", "rest_speed_m_per_s",
                  "rest_duration_s", "rest_quantile", "skin_mm"}},
         {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance", "min_opening_diameters", "min_fill_diameters", "min_particles"}},
@@ -103,6 +103,12 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
         if (*v == "table") s.wall_curve = bridge::CurveSource::exact;
         else if (*v == "mikami1998") s.wall_curve = bridge::CurveSource::fit;
         else throw InputError(r.where("liquid.wall_bridge", "liquid.wall_bridge"), "\"" + *v + "\"", "one of table, mikami1998");
+    }
+    if (auto v = r.text("liquid.lubrication")) {
+        if (*v == "finite_volume") s.lubrication = dem::Lubrication::finite_volume;
+        else if (*v == "unbounded") s.lubrication = dem::Lubrication::unbounded;
+        else throw InputError(r.where("liquid.lubrication", "liquid.lubrication"), "\"" + *v + "\"",
+                              "\"finite_volume\" (Pitois et al. 2000) or \"unbounded\" (LIGGGHTS' easo/capillary/viscous)");
     }
     if (auto v = r.text("liquid.rupture"))
         r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });

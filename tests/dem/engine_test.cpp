@@ -266,6 +266,67 @@ TEST_CASE("Viscous bridge: the lubrication force 6 pi mu R*^2 v_n / s by hand, a
     }
 }
 
+// The finite-volume lubrication by a second method: the Reynolds film between a sphere of R* and a
+// plane, gap h(ρ) = s + ρ²/(2R*), squeezed at v and wetted out to the meniscus ρ_m where the
+// liquid's volume ∫ 2πρ h dρ reaches V; p(ρ_m) = 0, dp/dρ = −6 μ v ρ / h³, F = ∫ 2πρ p dρ. Here
+// integrated by the midpoint rule (F = ∫ π ρ² (−dp/dρ) dρ after one integration by parts).
+double reynolds_film_force(double mu, double rstar, double s, double v, double volume) {
+    // ρ_m from V = π ρ_m² s + π ρ_m⁴ / (4 R*), by bisection.
+    double lo = 0, hi = 10 * rstar;
+    for (int i = 0; i < 200; ++i) {
+        const double m = 0.5 * (lo + hi);
+        (M_PI * m * m * s + M_PI * m * m * m * m / (4 * rstar) < volume ? lo : hi) = m;
+    }
+    const int n = 200000;
+    const double d = lo / n;
+    double f = 0;
+    for (int i = 0; i < n; ++i) {
+        const double rho = (i + 0.5) * d, h = s + rho * rho / (2 * rstar);
+        f += M_PI * rho * rho * 6 * mu * v * rho / (h * h * h) * d;
+    }
+    return f;
+}
+
+TEST_CASE("Viscous bridge: the finite-volume lubrication (Pitois et al. 2000) against the Reynolds film wetted by V",
+          "[dem][bridge][viscous]") {
+    const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01, dt = 1e-6, vhat = 0.055;
+    const auto k = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}});
+    const auto plate = bridge::mikami_coefficients(vhat, ContactAngle{Degrees{0}}, {}, bridge::BridgeGeometry::sphere_wall);
+    const CohesionLiquidBridge still{k, r, gamma, plate},
+        unbounded{k, r, gamma, plate, mu, s_min},
+        finite{k, r, gamma, plate, mu, s_min, Lubrication::finite_volume, vhat};
+    for (const bool wall : {false, true}) {
+        const double rstar = wall ? r : r / 2;
+        CohesionLiquidBridge::State a, b, c;
+        Dissipation lost;
+        still.pull(0.0, r, 0.0, dt, wall, a, lost), unbounded.pull(0.0, r, 0.0, dt, wall, b, lost), finite.pull(0.0, r, 0.0, dt, wall, c, lost);
+        for (double gap_hat : {0.0, 0.02, 0.1, 0.3}) {
+            INFO((wall ? "wall" : "spheres") << ", gap " << gap_hat << " R");
+            const double s = std::max(gap_hat * r, s_min);
+            const double f0 = still.pull(-gap_hat * r, r, v, dt, wall, a, lost);
+            Dissipation step;
+            const double fv = finite.pull(-gap_hat * r, r, v, dt, wall, c, step) - f0;
+            const double film = reynolds_film_force(mu, rstar, s, v, vhat * r * r * r);
+            CHECK(fv == Approx(film).epsilon(1e-6));
+            CHECK(step.bridge == Approx(fv * v * dt).epsilon(1e-9));  // fv: a difference of forces
+            CHECK(fv < unbounded.pull(-gap_hat * r, r, v, dt, wall, b, lost) - f0);  // never above the unbounded force
+        }
+    }
+    // At V^ = 0.055 between spheres the unbounded force is 3.58 x the finite one at s = 0.1 R (by
+    // hand: 1 / (1 - 1/sqrt(1 + 2 V^ / (pi 0.01)))^2), and 79 x at 0.36 R, near rupture (0.369 R).
+    REQUIRE(k.hhat_rupture > 0.36);
+    REQUIRE(plate.hhat_rupture > 0.3);
+    CohesionLiquidBridge::State b, c;
+    Dissipation lost;
+    unbounded.pull(0.0, r, 0.0, dt, false, b, lost), finite.pull(0.0, r, 0.0, dt, false, c, lost);
+    auto ratio = [&](double gap_hat) {
+        const double f0 = still.pull(-gap_hat * r, r, 0.0, dt, false, b, lost);
+        return (unbounded.pull(-gap_hat * r, r, v, dt, false, b, lost) - f0) / (finite.pull(-gap_hat * r, r, v, dt, false, c, lost) - f0);
+    };
+    CHECK(ratio(0.1) == Approx(3.58).epsilon(2e-3));
+    CHECK(ratio(0.36) == Approx(78.73).epsilon(2e-3));
+}
+
 TEST_CASE("Viscous bridge: the sliding drag 6 pi mu R* (8/15 ln(R*/s) + 0.9588) v_t by hand, with its torques",
           "[dem][bridge][viscous]") {
     const double r = 1e-3, gamma = 0.074, mu = 1e-3, s_min = 0.01 * r, v = 0.01, dt = 1e-6;

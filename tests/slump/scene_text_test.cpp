@@ -49,6 +49,7 @@ void require_same_run(const SlumpScene& a, const SlumpScene& b) {
         CHECK(a.bridge.rupture == b.bridge.rupture);
         CHECK(a.particle_curve == b.particle_curve);
         if (a.wet_walls) CHECK(a.wall_curve == b.wall_curve);
+        if (a.viscosity_pa_s > 0) CHECK(a.lubrication == b.lubrication);
     }
     for (const auto& part : dem::law_parts()) {
         REQUIRE(part.active(a) == part.active(b));
@@ -77,6 +78,10 @@ TEST_CASE("Scene text: every shipped scene and its variants read back as the sam
     fitted_walls.wall_curve = bridge::CurveSource::fit, fitted_walls.bridge.rupture = bridge::RuptureLaw::lian1993;
     fitted_walls.rolling_model = dem::RollingModel::epsd2, fitted_walls.radius_m = 1.0 / 3.0 * 1e-3;
     scenes.push_back(fitted_walls);
+    auto unbounded = shipped("kantro_wet.toml");  // viscous: the lubrication's form is part of the run
+    unbounded.lubrication = dem::Lubrication::unbounded;
+    scenes.push_back(unbounded);
+    CHECK(scene_key(unbounded) != scene_key(shipped("kantro_wet.toml")));
     for (const auto& s : scenes) {
         INFO(s.name << " R = " << s.radius_m);
         const auto back = scene_from_text(scene_text(s), "task.scene");

@@ -154,6 +154,10 @@ TEST_CASE("Bad scenes: the message names file, line, key and range", "[slump][er
                       Catch::Matchers::Contains("did you mean contact.friction"));
     CHECK_THROWS_WITH(load_slump_scene(write("[contact]\nrestitution = 1.5\n")), Catch::Matchers::Contains("(0, 1]"));
     CHECK_THROWS_WITH(load_slump_scene(write("[particles]\nseed = 1.5\n")), Catch::Matchers::Contains("an integer in [0, 2^32)"));
+    CHECK_THROWS_WITH(load_slump_scene(write("[liquid]\nlubrication = \"pitois\"\n")),
+                      Catch::Matchers::Contains(":2: liquid.lubrication") && Catch::Matchers::Contains("\"finite_volume\""));
+    CHECK(load_slump_scene(write("[liquid]\nviscosity_pa_s = 1e-3\n")).lubrication == dem::Lubrication::finite_volume);
+    CHECK(load_slump_scene(write("[liquid]\nlubrication = \"unbounded\"\n")).lubrication == dem::Lubrication::unbounded);
     auto s = small(true);
     s.dt_s = 1e-3;  // above 0.2 x the Rayleigh time (250 us here)
     CHECK_THROWS_WITH(run_slump(s), Catch::Matchers::Contains("small_wet.toml:8: run.dt_s = 0.001 s: accepted <= 5.05e-05 s"));

@@ -11,9 +11,11 @@
 //    Ledger: a bridge's potential is minus the work to pull it to rupture (F̂ integrated); it
 //    appears at contact with that negative value, so each formation books the same amount as lost.
 //    Viscous part (optional, viscosity > 0): the normal lubrication force of a liquid bridge,
-//    F_v = 6π μ R*² v_n / s (Pitois, Moucheront & Chateau 2000, Eq. 3 for s ≪ R; the normal part
-//    of LIGGGHTS' easo/capillary/viscous), s = max(gap, s_min), s_min the surface roughness; it
-//    pulls a separating pair together and pushes an approaching one apart, while a bridge holds.
+//    F_v = 6π μ R*² v_n / s · (1 − 1/√(1 + V/(π R* s²)))² (Pitois, Moucheront & Chateau 2000: the
+//    Reynolds film squeezed only where the bridge's volume V wets; docs/models/bridge-viscous.md),
+//    or, unbounded, without the bracket (the s ≪ R, V → ∞ limit; the normal part of LIGGGHTS'
+//    easo/capillary/viscous). s = max(gap, s_min), s_min the surface roughness; it pulls a
+//    separating pair together and pushes an approaching one apart, while a bridge holds.
 //    With it the tangential lubrication force F_t = −6π μ R* (8/15 ln(R*/s) + 0.9588) v_t (Goldman,
 //    Cox & Brenner 1967 for a sphere sliding past a plane, s ≪ R; the tangential part of
 //    easo/capillary/viscous, after Nase et al. 2001), v_t the sliding velocity at the contact point.
@@ -63,14 +65,17 @@ struct LiquidBridge {
     std::optional<bridge::BridgeCurve> wall;        // sphere–wall; nullopt: dry walls
     double viscosity = 0;                           // μ of the liquid, Pa s; 0: no viscous part
     double min_gap = 0;                             // s_min, m (roughness: the gap of touching surfaces)
+    Lubrication lubrication = Lubrication::unbounded;  // the normal lubrication's form
+    double vhat = 0;                                // V/R³ of every bridge (finite_volume reads it)
 
     // per_pair: each pair's bridge has R = its harmonic-mean radius 2 R_i R_j / (R_i + R_j) (R_i at
     // a wall; Mikami et al. 1998, Willett et al. 2000) and the same V̂ = V/R³: the liquid of Eq. 5
     // per bridge grows with the pair's mass. With equal radii both give the same bits.
     LiquidBridge(bridge::BridgeCurve sphere, double radius_m, double gamma_n_per_m, std::optional<bridge::BridgeCurve> wall_curve,
-                 double viscosity_pa_s = 0, double min_gap_m = 0)
+                 double viscosity_pa_s = 0, double min_gap_m = 0, Lubrication lubrication_form = Lubrication::unbounded,
+                 double bridge_vhat = 0)
         : k(std::move(sphere)), radius(radius_m), gamma(gamma_n_per_m), wall(std::move(wall_curve)), viscosity(viscosity_pa_s),
-          min_gap(min_gap_m), fhat0_(k.fhat(0.0)), fhat0_wall_(wall ? wall->fhat(0.0) : 0.0),
+          min_gap(min_gap_m), lubrication(lubrication_form), vhat(bridge_vhat), fhat0_(k.fhat(0.0)), fhat0_wall_(wall ? wall->fhat(0.0) : 0.0),
           touching_(k.force_scale() * radius_m * gamma_n_per_m * fhat0_),
           touching_wall_(wall ? wall->force_scale() * radius_m * gamma_n_per_m * fhat0_wall_ : 0.0),
           drag_touching_(drag_coefficient(0.5 * radius_m, min_gap_m)), drag_touching_wall_(drag_coefficient(radius_m, min_gap_m)) {}
@@ -100,8 +105,10 @@ struct LiquidBridge {
         const double capillary = static_pull(overlap, r, with_wall, s, lost);
         if (viscosity <= 0 || !s.bridged || (with_wall && !wall)) return capillary;
         // 6π μ R*² with R* = r/2 (sphere–sphere) or r (wall), in the order that keeps equal radii's bits.
-        const double lubrication = with_wall ? 6 * M_PI * viscosity * r * r : 6 * M_PI * viscosity * 0.25 * r * r;
-        const double viscous = lubrication * v_normal / std::max(-overlap, min_gap);
+        const double squeeze = with_wall ? 6 * M_PI * viscosity * r * r : 6 * M_PI * viscosity * 0.25 * r * r;
+        const double s_gap = std::max(-overlap, min_gap);
+        double viscous = squeeze * v_normal / s_gap;
+        if (lubrication == Lubrication::finite_volume) viscous *= finite_volume_factor(r, s_gap, with_wall);
         lost.bridge += viscous * v_normal * dt;
         return capillary + viscous;
     }
@@ -162,6 +169,15 @@ private:
     double drag_coefficient(double r_star, double gap) const {
         const double s = std::max(gap, min_gap);
         return 6 * M_PI * viscosity * r_star * std::max(0.0, 8.0 / 15.0 * std::log(r_star / s) + 0.9588);
+    }
+
+    // (1 − s/H)² of Pitois et al. (2000): the film is squeezed out to the meniscus, where the gap is
+    // H; a bridge of volume V on a sphere of R* (a plane opposite) has V = π R* (H² − s²). V = V̂ r³;
+    // R* = r/2 between spheres, r at a wall. 1 as V → ∞.
+    DEMSCALE_HOT double finite_volume_factor(double r, double s, bool with_wall) const {
+        const double wetted = (with_wall ? 1.0 : 2.0) * vhat * r * r / (M_PI * s * s);  // V / (π R* s²)
+        const double f = 1 - 1 / std::sqrt(1 + wetted);
+        return f * f;
     }
 
     double potential(const bridge::BridgeCurve& law, double r, double overlap) const {
