@@ -39,7 +39,16 @@ void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& w
     c->add_option("--format", o.format, "text | markdown | csv | json")->capture_default_str();
     c->add_flag("--no-png", o.no_png, "no figures (gnuplot scripts only)");
     c->add_flag("--force-dt", o.force_dt, "accept a time step above 0.2 x the Rayleigh time");
+    c->add_option("--baseline", o.baseline,
+                  "dry: also run the scene without liquid (same seeds) and judge after removing its coarse - fine offset; none: raw only")
+        ->capture_default_str();
     add_backend_options(c, o.slurm);
+}
+
+slump::Baseline parse_baseline(const std::string& text) {
+    if (text == "dry") return slump::Baseline::dry;
+    if (text == "none") return slump::Baseline::none;
+    throw InputError("--baseline", text, "dry (a dry control of the same seeds decides) or none (the raw comparison decides)");
 }
 
 void add_backend_options(CLI::App* c, SlurmOptions& o) {

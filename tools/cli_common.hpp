@@ -12,6 +12,7 @@
 
 #include "io/table_config.hpp"
 #include "io/table_format.hpp"
+#include "slump/ensemble_verdict.hpp"
 #include "slump/slump_scene.hpp"
 #include "slump/slurm_backend.hpp"
 
@@ -98,6 +99,7 @@ struct StudyRunOptions {
     bool no_cache = false, no_png = false, force_dt = false;
     std::string out_dir = default_plots;
     std::string format = "text";
+    std::string baseline = "dry";
     SlurmOptions slurm;
 };
 void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out);
@@ -109,6 +111,8 @@ struct BatchSettings {
     std::optional<slump::SlurmSettings> slurm;
 };
 BatchSettings batch_settings(const StudyRunOptions& o);
+// --baseline: "dry" (the dry control of the same seeds, which decides) or "none" (raw decides).
+slump::Baseline parse_baseline(const std::string& text);
 
 // Several tables in one output (a JSON array, or blocks separated by a blank line).
 std::string join_tables(const std::vector<io::Table>& tables, io::Format format);

@@ -29,6 +29,7 @@ slump::ResponsePlan plan_from(const Options& o) {
     plan.factors = parse_factor_range(o.range, o.levels, "--range", "--levels");
     plan.offset_exponent = o.offset;
     plan.seeds = o.seeds;
+    plan.baseline = parse_baseline(o.run.baseline);
     if (o.resamples < 100 || o.resamples > 100000) throw InputError("--resamples", std::to_string(o.resamples), "100 to 100000");
     plan.search.resamples = o.resamples;
     const auto b = batch_settings(o.run);
@@ -74,7 +75,13 @@ int run_estimate(const Options& o) {
         for (const auto& e : study.fine) runs += e.runs.size();
         std::cout << "\n" << runs << " fine runs (" << study.fine.size() << (study.fine.size() == 1 ? " level x " : " levels x ") << plan.seeds << " seeds); " << format_short(study.wall_s, 3)
                   << " s\n";
+        if (study.has_control())
+            std::cout << "baseline-corrected (decides): each coarse curve less its dry control's offset, same seeds\n";
         for (const auto& e : study.estimates) std::cout << summary(e) << "\n";
+        if (study.has_control()) {
+            std::cout << "raw, for comparison (the dry offset read as a shift in k):\n";
+            for (const auto& e : study.raw_estimates) std::cout << "  raw " << summary(e) << "\n";
+        }
         if (!study.wet) std::cout << "dry scene: no liquid to vary; the table is the dry control (coarse against fine)\n";
     }
     for (const auto& f : files.written) std::cerr << "wrote " << f.string() << "\n";

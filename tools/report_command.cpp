@@ -21,6 +21,7 @@ struct Options {
     std::string estimate_sf, estimate_range = "0.5,4";
     int estimate_levels = 0;               // 0: 4, or 3 with --quick
     int estimate_seeds = 0;                // 0: the report's --seeds
+    std::string baseline = "dry";
     SlurmOptions slurm;
 };
 
@@ -42,6 +43,7 @@ int run_report(const Options& o) {
     r.slurm = slurm_settings(o.slurm);
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
     r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
+    r.baseline = parse_baseline(o.baseline);
     r.git_revision = demscale::git_revision;  // the build's, refreshed at every build
     if (o.estimate) {
         slump::ResponsePlan e;
@@ -50,6 +52,7 @@ int run_report(const Options& o) {
                                        "--estimate-range", "--estimate-levels");
         if (o.estimate_seeds < 0) throw InputError("--estimate-seeds", std::to_string(o.estimate_seeds), "2 to 64");
         e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : r.seeds;
+        e.baseline = r.baseline;
         r.estimate = e;
     }
     const auto progress = progress_output("report");
@@ -76,6 +79,8 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_flag("--no-cache", o->no_cache, "run every slump; read and write no cache");
     c->add_option("--seeds", o->seeds, "runs per ensemble, fine and each (S_f, k) (default 8; --quick: 3)");
     c->add_option("--jobs", o->jobs, "slump runs side by side (default: one per core)");
+    c->add_option("--baseline", o->baseline, "dry: the dry control of the same seeds decides the verdicts and k-hat; none: raw")
+        ->capture_default_str();
     c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
     add_backend_options(c, o->slurm);
     c->add_flag("--estimate", o->estimate, "add the measured exponent: response curves and k-hat (costs the most; see estimate-exponent)");

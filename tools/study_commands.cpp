@@ -1,8 +1,9 @@
 // Subcommands of the coarse-graining study: check-exponent (one k, a verdict and an exit code) and
 // sweep (several k, the best per S_f). Both run the fine reference and the coarse runs side by
 // side, reuse cached runs, and write a table and figures.
-#include <optional>
 #include <algorithm>
+#include <optional>
+#include <set>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -48,6 +49,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     if (b.cache_dir) plan.cache_dir = *b.cache_dir;
     plan.slurm = b.slurm;
     plan.seeds = o.seeds;
+    plan.baseline = parse_baseline(o.run.baseline);
     return plan;
 }
 
@@ -79,16 +81,34 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
     }
     if (format != io::Format::json && gate) {
         std::size_t n[3] = {0, 0, 0};
-        for (const auto& v : study.verdicts) ++n[static_cast<int>(v.overall)];
+        for (const auto& v : study.deciding())
+            if (v.unusable.empty()) ++n[static_cast<int>(v.overall)];
         std::cout << "\nverdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
-                  << " INCONCLUSIVE of " << study.verdicts.size() << " (S_f, k) ensembles of " << plan.seeds << " seeds\n";
+                  << " INCONCLUSIVE of " << n[0] + n[1] + n[2] << " judged (S_f, k) ensembles of " << plan.seeds << " seeds"
+                  << (study.has_control() ? ", baseline-corrected" : "") << "\n";
         for (const auto& l : study.limited) {
             std::cout << "S_f = " << format_short(l.sf) << ": GEOMETRY-LIMITED, not run (";
             for (std::size_t i = 0; i < l.reasons.size(); ++i) std::cout << (i ? "; " : "") << l.reasons[i];
             std::cout << "); it does not enter the verdict\n";
         }
-        if (study.verdicts.empty())
-            std::cout << "INCONCLUSIVE: no S_f could be judged in this scene's cone (a finer scene, or lower [check] limits)\n";
+        // The cost: distinct runs (equal scenes run once), how many came from the cache, the wall time.
+        std::set<std::string> distinct, cached, dry;
+        for (const auto* r : study.all_runs()) {
+            distinct.insert(r->key);
+            if (r->from_cache) cached.insert(r->key);
+            if (plan.fine.wet && !r->scene.wet) dry.insert(r->key);
+        }
+        std::cout << "cost: " << distinct.size() << " distinct runs (" << cached.size() << " from the cache"
+                  << (study.has_control() ? "; " + std::to_string(dry.size()) + " of them the dry control" : std::string()) << "), "
+                  << format_short(study.wall_s, 3) << " s of wall time, " << plan.jobs << " job(s) x " << plan.threads_per_job
+                  << " thread(s)\n";
+        for (const auto& v : study.deciding())
+            if (!v.unusable.empty())
+                std::cout << "S_f = " << format_short(v.sf) << ", k = " << format_short(v.exponent) << ": UNUSABLE FILL, not judged ("
+                          << v.unusable << "); it does not enter the verdict\n";
+        if (study.judged_scale_factors().empty())
+            std::cout << "INCONCLUSIVE: no S_f could be judged in this scene's cone (a finer scene, lower [check] limits, or fills "
+                         "the cone can hold)\n";
         else if (overall == stats::Verdict::inconclusive)
             std::cout << "INCONCLUSIVE: the 95 % intervals straddle a tolerance; the smallest tolerances these data confirm are in the "
                          "verdict table (more --seeds narrow the intervals)\n";

@@ -20,6 +20,7 @@ struct Table {
     std::string title;
     std::vector<std::pair<std::string, std::string>> metadata;  // key, value
     std::vector<std::string> columns;                            // snake_case names carrying their unit
+    std::vector<std::string> headings;                           // the columns in words with units, for people (empty: derived)
     std::vector<std::vector<Cell>> rows;
     std::vector<std::string> notes;                              // warnings and remarks shown below
 };

@@ -80,7 +80,7 @@ void html_table_part(std::ostringstream& h, const io::Table& t) {
 }
 
 void html_table(std::ostringstream& h, const io::Table& t) {
-    for (const auto& part : fit_to_width(t)) html_table_part(h, part);
+    for (const auto& part : fit_to_width(for_people(t))) html_table_part(h, part);
 }
 
 const char* style = R"(body{font-family:'DejaVu Sans',Helvetica,Arial,sans-serif;max-width:1180px;margin:2em auto;padding:0 1.5em;color:#1b1b1b;line-height:1.45}
@@ -131,7 +131,7 @@ std::string render_markdown(const Document& d, const fs::path& markdown_dir) {
                                    for (const auto& i : l.items) m << "- " << i << "\n";
                                },
                                [&](const TableBlock& t) {
-                                   for (const auto& part : fit_to_width(t.table))
+                                   for (const auto& part : fit_to_width(for_people(t.table)))
                                        m << "\n" << io::render(with_document_numbers(part), io::Format::markdown);
                                },
                                [&](const FigureBlock& f) {

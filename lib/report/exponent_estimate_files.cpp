@@ -50,18 +50,27 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     t.columns = {"sf", "gamma_n_per_m", "seeds", "slump_over_height", "slump_low", "slump_high", "spread_over_d0",
                  "spread_low", "spread_high", "at_rest", "seeds_split"};
     auto add = [&](const slump::ResponseEnsemble& e) {
+        if (const auto why = e.unusable(); !why.empty()) {  // not a point of the curve
+            std::vector<io::Cell> row(t.columns.size(), io::Cell(io::not_available));
+            row[0] = e.sf, row[1] = e.gamma > 0 ? io::Cell(e.gamma) : io::Cell(io::not_available);
+            row[2] = static_cast<double>(e.runs.size()), row[9] = "UNUSABLE fill, " + why;
+            t.rows.push_back(std::move(row));
+            return;
+        }
         const auto& s = e.slump_over_height;
         const auto& d = e.spread_over_diameter;
         std::size_t rest = 0;
         for (const auto& r : e.runs) rest += r.result.came_to_rest;
-        t.rows.push_back({e.sf, study.wet ? io::Cell(e.gamma) : io::Cell(io::not_available), static_cast<double>(e.runs.size()), s.mean,
+        t.rows.push_back({e.sf, e.gamma > 0 ? io::Cell(e.gamma) : io::Cell(io::not_available), static_cast<double>(e.runs.size()), s.mean,
                           s.ci.low, s.ci.high, d.mean, d.ci.low, d.ci.high,
                           std::to_string(rest) + " of " + std::to_string(e.runs.size()), split_label(study, e)});
     };
     for (const auto& e : study.fine) add(e);
     for (const auto& levels : study.coarse)
         for (const auto& e : levels) add(e);
+    for (const auto& e : study.dry_control) add(e);
     t.notes.push_back("means over the seeds with 95 % Student t intervals; d0: the cone's bottom diameter");
+    if (study.has_control()) t.notes.push_back("rows without a surface tension after the levels: the dry control (no liquid), fine then each S_f");
     if (study.wet) t.notes.push_back("coarse levels: gamma is the coarse run's own surface tension (gamma-bar)");
     if (!study.split.empty()) t.notes.push_back(split_note);
     return t;
@@ -72,20 +81,38 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
     t.title = "Measured exponent k-hat of gamma-bar = gamma S_f^k, from the shift of the response curves (" + scene_label + ")";
     t.metadata = {{"estimator", "least-squares shift of the coarse means onto the fine curve (monotone cubic through the fine means, "
                                 "flat beyond), k = shift / ln S_f; 95 % percentile bootstrap over seeds (docs/exponent-estimate.md)"}};
-    t.columns = {"sf", "k_hat", "k_low", "k_high", "determined", "split_levels", "rms_at_k_hat", "rms_at_k1", "rms_at_k2", "rms_at_k3",
-                 "groups_inside"};
-    for (const auto& e : study.estimates) {
-        const auto cs = curves_of(study, e);
-        std::string inside;
-        for (const auto& g : groups)
-            if (e.ci.contains(g.k)) inside += (inside.empty() ? "" : ", ") + std::string(g.name) + " k = " + format_short(g.k);
-        if (!e.determined) inside = "undetermined: no unique shift maps the curves onto each other";
-        else if (inside.empty()) inside = "none";
-        t.rows.push_back({sf_label(e), e.k, e.ci.low, e.ci.high, e.determined ? "yes" : "no", static_cast<double>(e.split_levels), e.rms,
-                          stats::shift_residual_rms(study.fine_curve, cs, 1), stats::shift_residual_rms(study.fine_curve, cs, 2),
-                          stats::shift_residual_rms(study.fine_curve, cs, 3), inside});
-    }
+    t.columns = {"sf", "comparison", "k_hat", "k_low", "k_high", "dry_offset_pct_of_height", "determined", "split_levels", "rms_at_k_hat",
+                 "rms_at_k1", "rms_at_k2", "rms_at_k3", "groups_inside"};
+    t.headings = {"S_f", "comparison", "k̂", "k low (95 %)", "k high (95 %)", "dry offset, % of fill height", "determined",
+                  "split levels", "rms at k̂", "rms at k = 1", "rms at k = 2", "rms at k = 3", "similarity groups inside the interval"};
+    t.metadata.push_back({"decides", study.has_control() ? "baseline-corrected: the dry control's coarse - fine offset subtracted"
+                                                         : "raw (no dry control: --baseline none)"});
+    auto rows = [&](const std::vector<stats::ExponentEstimate>& estimates, const std::string& comparison, bool with_control) {
+        for (const auto& e : estimates) {
+            auto cs = curves_of(study, e);
+            auto fine = study.fine_curve;
+            if (!with_control) {
+                fine.control.clear();
+                for (auto& c : cs) c.control.clear();
+            }
+            std::string inside;
+            for (const auto& g : groups)
+                if (e.ci.contains(g.k)) inside += (inside.empty() ? "" : ", ") + std::string(g.name) + " k = " + format_short(g.k);
+            if (!e.determined) inside = "undetermined: no unique shift maps the curves onto each other";
+            else if (inside.empty()) inside = "none";
+            t.rows.push_back({sf_label(e), comparison, e.k, e.ci.low, e.ci.high,
+                              e.sf == 0 || !with_control ? io::Cell(io::not_available) : io::Cell(100 * e.offset),
+                              e.determined ? "yes" : "no", static_cast<double>(e.split_levels), e.rms,
+                              stats::shift_residual_rms(fine, cs, 1), stats::shift_residual_rms(fine, cs, 2),
+                              stats::shift_residual_rms(fine, cs, 3), inside});
+        }
+    };
+    rows(study.estimates, study.has_control() ? "baseline-corrected" : "raw", study.has_control());
+    if (study.has_control()) rows(study.raw_estimates, "raw", false);
     t.notes.push_back("sf 'all': one k for every scale factor together");
+    if (study.has_control())
+        t.notes.push_back("baseline-corrected: each coarse curve less the dry control's offset (dry coarse - dry fine slump over fill "
+                          "height, same seeds), so that what S_f changes without liquid is not read as a shift in k; raw: without it");
     t.notes.push_back("rms: root mean square difference of the coarse means (slump over fill height) from the shifted fine curve");
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
     t.notes.push_back("split_levels: the levels it rests on whose seeds split between the ends of the response (response table, "

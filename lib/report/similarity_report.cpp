@@ -71,7 +71,7 @@ io::Table bridge_at_scene(double vhat, ContactAngle theta) {
 // "k = 1: PASS at S_f = 1.4; INCONCLUSIVE at S_f = 1.96; FAIL at S_f = 2.74, 3.84. k = 3: ..."
 std::string verdicts_by_exponent(const slump::Study& study) {
     std::vector<double> ks;
-    for (const auto& v : study.verdicts)
+    for (const auto& v : study.deciding())
         if (std::find(ks.begin(), ks.end(), v.exponent) == ks.end()) ks.push_back(v.exponent);
     std::string text;
     for (double k : ks) {
@@ -79,10 +79,14 @@ std::string verdicts_by_exponent(const slump::Study& study) {
         std::string sep = " ";
         for (auto outcome : {stats::Verdict::pass, stats::Verdict::inconclusive, stats::Verdict::fail}) {
             std::string sfs;
-            for (const auto& v : study.verdicts)
-                if (v.exponent == k && v.overall == outcome) sfs += (sfs.empty() ? "" : ", ") + format_short(v.sf);
+            for (const auto& v : study.deciding())
+                if (v.exponent == k && v.overall == outcome && v.unusable.empty()) sfs += (sfs.empty() ? "" : ", ") + format_short(v.sf);
             if (!sfs.empty()) text += sep + stats::verdict_name(outcome) + " at S_f = " + sfs, sep = "; ";
         }
+        std::string unusable;
+        for (const auto& v : study.deciding())
+            if (v.exponent == k && !v.unusable.empty()) unusable += (unusable.empty() ? "" : ", ") + format_short(v.sf);
+        if (!unusable.empty()) text += sep + "fills unusable (the cone could not hold them) at S_f = " + unusable;
         text += ". ";
     }
     return text;
@@ -103,8 +107,8 @@ std::string verdict_text(const slump::Study& study, const std::vector<double>& s
              stats::verdict_name(b.overall) + ". ";
     }
     auto distance = [&](double sf, double k) -> std::optional<double> {
-        for (const auto& e : study.verdicts)
-            if (e.sf == sf && e.exponent == k) return e.criteria[2].estimate;
+        for (const auto& e : study.deciding())
+            if (e.sf == sf && e.exponent == k && e.unusable.empty()) return e.criteria[2].estimate;
         return std::nullopt;
     };
     int compared = 0, k1_better = 0;
@@ -143,6 +147,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     plan.cache_dir = o.cache_dir;
     plan.slurm = o.slurm;
     plan.seeds = o.seeds;
+    plan.baseline = o.baseline;
     plan.live = o.live;
     slump::validate_plan(plan);  // a bad plan is refused before any file is written
     std::optional<slump::ResponsePlan> response;  // the measured exponent's, checked with the rest
@@ -254,28 +259,38 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         };
         side(study.reference, "slump_reference", "fine reference (S_f = 1), seed " + std::to_string(study.reference.scene.seed));
         for (const auto& r : study.runs)
-            side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
+            if (r.unusable.empty()) side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
                  "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent) + ", seed " + std::to_string(r.scene.seed));
         const auto files = write_study_files(study, o.scene_label, figures, "study", true);
         slump_section.blocks.push_back(TableBlock{ensemble_table(study, o.scene_label)});
-        slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
-        slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
-        slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
+        if (!files.front_png.empty()) {  // none when no ensemble could be judged
+            slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
+            slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
+            slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
+        }
         slump_section.blocks.push_back(TableBlock{best_exponent_table(study, study.judged_scale_factors())});
         slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, study.judged_scale_factors())});
         slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
         verdict_section.blocks.push_back(Paragraph{
             "Each coarse ensemble (S_f, k) is compared with the fine ensemble, " + std::to_string(plan.seeds) +
             " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies inside the tolerance, FAIL "
-            "where it lies wholly outside, INCONCLUSIVE otherwise (docs/verdicts.md). " + verdicts_by_exponent(study)});
+            "where it lies wholly outside, INCONCLUSIVE otherwise (docs/verdicts.md). " +
+            (study.has_control() ? std::string("Each is judged twice: raw, and after removing the offset the same S_f shows in the dry "
+                                               "control (the same scene and seeds without liquid); the corrected comparison decides, "
+                                               "and the dry control's own difference is the row beside. ")
+                                 : std::string()) +
+            verdicts_by_exponent(study)});
         verdict_section.blocks.push_back(TableBlock{verdict_table(study, o.scene_label)});
         // Caveats per ensemble, not per run: how many runs did not come to rest, which geometry limits apply.
         auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {
-            std::size_t moving = 0;
-            for (const auto* r : runs) moving += !r->result.came_to_rest;
+            std::size_t moving = 0, unusable = 0;
+            for (const auto* r : runs) moving += r->unusable.empty() && !r->result.came_to_rest, unusable += !r->unusable.empty();
             if (moving > 0)
                 caveats.push_back({who, "slump: " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
                                             " runs not at rest when the spread time limit ended"});
+            if (unusable > 0)
+                caveats.push_back({who, "slump: " + std::to_string(unusable) + " of " + std::to_string(runs.size()) +
+                                            " fills unusable (the cone could not hold the scene's mass): the ensemble is not judged"});
             for (const auto& w : runs.front()->warnings) caveats.push_back({who, "slump geometry limits similarity: " + w});
         };
         std::vector<const slump::StudyRun*> fine = {&study.reference};

@@ -30,6 +30,7 @@ struct ReportOptions {
     int jobs = 1, threads_per_job = 1;
     std::optional<slump::SlurmSettings> slurm;  // the slump runs go to Slurm (slump/slurm_backend.hpp)
     int seeds = 8;                          // runs per ensemble, fine and coarse
+    slump::Baseline baseline = slump::Baseline::dry;  // a wet scene's dry control (slump/study.hpp)
     std::string git_revision;               // shown in the inputs
     std::function<void(const std::string&)> live;  // slump runs in progress (slump::BatchOptions::live)
     // The measured exponent (its fine scene and runner filled in by the report): none, no section.

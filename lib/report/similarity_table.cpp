@@ -65,12 +65,20 @@ io::Table similarity_table(const io::TableConfig& c, const std::vector<double>& 
     t.columns = {"radius_mm", "sf", "mass_g", "mass_table_g", "mass_table_dev_pct", "particle_volume_mm3",
                  "replaced_count", "v_mm3", "vhat", "a", "b", "c", "f_over_pi_r_gamma_contact",
                  "f_over_2pi_r_gamma_contact", "fc_contact_n", "hhat_rupture"};
+    t.headings = {"particle radius R (mm)", "S_f", "particle mass (g)", "mass in the paper's Table 1 (g)",
+                  "difference from the paper's mass (%)", "particle volume (mm³)", "fine particles replaced (S_f³)",
+                  "bridge liquid V (mm³)", "V̂ = V/R³", "Mikami A", "Mikami B", "Mikami C", "F/(π R γ) at contact",
+                  "F/(2π R γ) at contact", "bridge force at contact, physical γ (N)", "rupture gap ĥ_c (gap/R)"};
     for (double k : exponents) {
-        const std::string tag = exponent_tag(k);
+        const std::string tag = exponent_tag(k), at = " at k = " + format_short(k);
         for (const char* col : {"gamma_n_per_m_k", "fc_contact_n_k", "sigma_contact_pa_k", "force_ratio_k", "sigma_ratio_k"})
             t.columns.push_back(col + tag);
+        for (const std::string& h : {"γ̄" + at + " (N/m)", "bridge force at contact" + at + " (N)", "bridge stress F/(π R²)" + at + " (Pa)",
+                                     "F / F physical" + at, "σ / σ physical" + at})
+            t.headings.push_back(h);
     }
     t.columns.push_back("validity");
+    t.headings.push_back("validity");
 
     std::set<std::string> notes;
     for (std::size_t i = 0; i < p.rows.size(); ++i) {

@@ -82,7 +82,7 @@ std::string error_script(const std::string& stem, const std::vector<double>& sfs
     // Lines between exponents would draw a response nobody ran: join the points only for a sweep
     // (exponents at most 0.5 apart), where the line follows what was run.
     std::vector<double> ks;
-    for (const auto& v : study.verdicts) ks.push_back(v.exponent);
+    for (const auto& v : study.deciding()) ks.push_back(v.exponent);
     std::sort(ks.begin(), ks.end());
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     bool sweep = ks.size() > 2;
@@ -153,8 +153,9 @@ io::Table verdict_numbers(const slump::Study& study, const std::string& scene_la
     t.title = "Coarse ensembles against the fine ensemble (" + scene_label + "), in %";
     t.columns = {"sf", "exponent", "seeds", "slump_pct", "slump_low_pct", "slump_high_pct", "spread_pct", "spread_low_pct",
                  "spread_high_pct", "profile_pct", "profile_low_pct", "profile_high_pct", "speedup_work", "verdict"};
-    for (std::size_t i = 0; i < study.verdicts.size(); ++i) {
-        const auto& v = study.verdicts[i];
+    for (std::size_t i = 0; i < study.deciding().size(); ++i) {
+        const auto& v = study.deciding()[i];
+        if (!v.unusable.empty()) continue;  // no numbers: its fills were no columns
         std::vector<io::Cell> row = {v.sf, v.exponent, static_cast<double>(v.coarse_seeds)};
         for (const auto& c : v.criteria) row.push_back(100 * c.estimate), row.push_back(100 * c.interval.low), row.push_back(100 * c.interval.high);
         double work = 0;
@@ -196,9 +197,13 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
             profiles.rows.push_back({run_label(*r), r->grain.sf, r->grain.exponent, q.radius * 1e3, q.height * 1e3});
     write(stem + "_profiles.csv", io::render(profiles, io::Format::csv));
 
+    // The figures show the judged ensembles: an unusable one has no numbers (gnuplot refuses a line of none).
     std::vector<double> ks, sfs;
-    for (const auto& r : study.runs) ks.push_back(r.grain.exponent), sfs.push_back(r.grain.sf);
+    for (std::size_t i = 0; i < study.runs.size(); ++i)
+        if (study.deciding()[i].unusable.empty() && study.runs[i].unusable.empty())
+            ks.push_back(study.runs[i].grain.exponent), sfs.push_back(study.runs[i].grain.sf);
     ks = distinct(ks), sfs = distinct(sfs);
+    if (ks.empty()) return f;
     auto figure = [&](const std::string& name, const std::string& script, fs::path& png) {
         write(name + ".gp", script);
         if (!render_png) return;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "core/input_error.hpp"
 #include "stats/summary.hpp"
@@ -11,6 +12,7 @@ namespace demscale::report {
 namespace {
 
 std::string remarks(const slump::StudyRun& r) {
+    if (!r.unusable.empty()) return "UNUSABLE: " + r.unusable;
     std::string t;
     if (!r.result.came_to_rest) t += "not at rest; ";
     for (const auto& w : r.warnings) t += w + "; ";
@@ -36,6 +38,30 @@ io::Cell mean_or_na(const std::vector<double>& v) {
 
 }  // namespace
 
+namespace {
+
+// One row of the verdict table: an ensemble's three criteria under one comparison.
+std::vector<io::Cell> verdict_row(const slump::EnsembleVerdict& v, const std::string& comparison, bool decides) {
+    if (!v.unusable.empty())
+        return {v.sf, v.exponent, comparison, 0.0, io::Cell(io::not_available), io::Cell(io::not_available),
+                io::Cell(io::not_available), "UNUSABLE FILL", io::Cell(io::not_available), v.unusable + " (not judged)"};
+    std::string smallest, notes;
+    std::vector<io::Cell> row = {v.sf, v.exponent, comparison, static_cast<double>(v.coarse_seeds)};
+    for (const auto& c : v.criteria) {
+        row.push_back(interval_pct(c.estimate, c.interval) + " " + stats::verdict_name(c.verdict));
+        smallest += (smallest.empty() ? "" : " / ") + format_short(100 * c.smallest_tolerance, 3);
+        if (!c.reason.empty()) notes += c.measure + ": " + c.reason + "; ";
+    }
+    for (const auto& w : v.warnings) notes += w + "; ";
+    if (!notes.empty()) notes.resize(notes.size() - 2);
+    row.push_back(stats::verdict_name(v.overall) + (decides ? " (decides)" : ""));
+    row.push_back(smallest);
+    row.push_back(notes);
+    return row;
+}
+
+}  // namespace
+
 io::Table verdict_table(const slump::Study& study, const std::string& scene_label) {
     io::Table t;
     t.title = "Verdict per scale factor and exponent: coarse ensemble against the fine ensemble (" + scene_label + ")";
@@ -44,27 +70,29 @@ io::Table verdict_table(const slump::Study& study, const std::string& scene_labe
     const bool one_exponent = std::all_of(study.verdicts.begin(), study.verdicts.end(),
                                           [&](const auto& v) { return v.exponent == study.verdicts.front().exponent; });
     if (one_exponent) t.metadata.push_back({"overall", stats::verdict_name(study.overall())});
-    t.columns = {"sf", "exponent", "seeds", "slump_diff_pct_of_height", "spread_diff_pct", "profile_distance_pct", "verdict",
+    t.metadata.push_back({"decides", study.has_control() ? "the baseline-corrected comparison (dry control of the same seeds removed)"
+                                                         : "the raw comparison (--baseline none, or a dry scene: no baseline runs)"});
+    t.columns = {"sf", "exponent", "comparison", "seeds", "slump_diff_pct_of_height", "spread_diff_pct", "profile_distance_pct", "verdict",
                  "smallest_tolerances_pct", "notes"};
-    for (const auto& v : study.verdicts) {
-        std::string smallest, notes;
-        std::vector<io::Cell> row = {v.sf, v.exponent, static_cast<double>(v.coarse_seeds)};
-        for (const auto& c : v.criteria) {
-            row.push_back(interval_pct(c.estimate, c.interval) + " " + stats::verdict_name(c.verdict));
-            smallest += (smallest.empty() ? "" : " / ") + format_short(100 * c.smallest_tolerance, 3);
-            if (!c.reason.empty()) notes += c.measure + ": " + c.reason + "; ";
+    t.headings = {"S_f", "k", "comparison", "seeds", "slump difference, % of fill height [95 % interval]",
+                  "spread difference, % [95 % interval]", "profile distance, % [95 % interval]", "verdict",
+                  "smallest tolerances these data confirm, % (slump / spread / profile)", "notes"};
+    std::set<std::string> dry_shown;  // run keys (run_batch sets them)
+    for (std::size_t i = 0; i < study.verdicts.size(); ++i) {
+        t.rows.push_back(verdict_row(study.verdicts[i], "raw", !study.has_control()));
+        if (!study.has_control() || !study.verdicts[i].unusable.empty()) continue;
+        t.rows.push_back(verdict_row(study.corrected[i], "baseline-corrected", true));
+        // The dry control once per S_f when the dry scenes of several k are one (nothing else scaled).
+        if (dry_shown.insert(study.dry_coarse[i].front().key).second) {
+            auto row = verdict_row(study.controls[i], "dry control", false);
+            row[1] = io::Cell(io::not_available);
+            t.rows.push_back(std::move(row));
         }
-        for (const auto& w : v.warnings) notes += w + "; ";
-        if (!notes.empty()) notes.resize(notes.size() - 2);
-        row.push_back(stats::verdict_name(v.overall));
-        row.push_back(smallest);
-        row.push_back(notes);
-        t.rows.push_back(std::move(row));
     }
     for (const auto& l : study.limited) {
         std::string why;
         for (const auto& r : l.reasons) why += (why.empty() ? "" : "; ") + r;
-        t.rows.push_back({l.sf, io::Cell(io::not_available), 0.0, io::Cell(io::not_available), io::Cell(io::not_available),
+        t.rows.push_back({l.sf, io::Cell(io::not_available), "none", 0.0, io::Cell(io::not_available), io::Cell(io::not_available),
                           io::Cell(io::not_available), "GEOMETRY-LIMITED", io::Cell(io::not_available), why + " (not run)"});
     }
     if (!study.limited.empty())
@@ -74,8 +102,14 @@ io::Table verdict_table(const slump::Study& study, const std::string& scene_labe
     t.notes.push_back("each cell: estimate [95 % interval], in %; slump as (coarse - fine) mean slump over the fill height, Welch t; "
                       "spread (diameter at half height) as the difference of means over the fine mean, Welch t; profile as the distance between the mean "
                       "shapes, bootstrap over seeds");
+    if (study.has_control())
+        t.notes.push_back("raw: the wet ensembles as they are; baseline-corrected: each seed's wet value less its dry twin's, coarse "
+                          "against fine (profile: the wet-minus-dry mean shapes), which removes the offset the same S_f shows without "
+                          "liquid; dry control: the dry coarse ensemble against the dry fine one, that offset itself (docs/verdicts.md)");
+    if (std::any_of(study.verdicts.begin(), study.verdicts.end(), [](const auto& v) { return !v.unusable.empty(); }))
+        t.notes.push_back("UNUSABLE FILL: the cone could not hold the scene's mass of these spheres (the pour jammed in the top opening, "
+                          "or the fill did not fit under the cone's top): not a column, not judged, not in the overall verdict");
     t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
-    t.notes.push_back("smallest_tolerances_pct: slump / spread / profile tolerances these data could confirm");
     return t;
 }
 
@@ -89,7 +123,8 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
     double fine_mass = 0;
     for (const auto* r : study.fine_ensemble()) fine_mass += r->fill.mass / static_cast<double>(study.fine_ensemble().size());
     const double r_fine = study.reference.scene.radius_m;
-    auto row = [&](const std::vector<const slump::SlumpResult*>& runs, double sf, io::Cell exponent) {
+    // dry: the dry control's rows, whose shape the wet fine mean does not measure (n/a).
+    auto row = [&](const std::vector<const slump::SlumpResult*>& runs, double sf, io::Cell exponent, bool dry = false) {
         std::vector<double> sh, mm, d95, prof, rest_t, phi, z, repose, particles, steps, wall, work, mass, height;
         std::size_t at_rest = 0;
         for (const auto* r : runs) {
@@ -106,12 +141,20 @@ io::Table ensemble_table(const slump::Study& study, const std::string& scene_lab
         t.rows.push_back({sf, exponent, static_cast<double>(runs.size()), stats::summarize(particles).mean, stats::summarize(steps).mean,
                           stats::summarize(wall).mean, study.fine.particle_steps / stats::summarize(work).mean, study.fine.wall_s / stats::summarize(wall).mean,
                           s.mean, s.sd, stats::summarize(mm).mean, stats::summarize(mm).mean * 1e-3 / r_fine, d.mean, d.sd,
-                          stats::summarize(prof).mean, std::to_string(at_rest) + " of " + std::to_string(runs.size()),
+                          dry ? io::Cell(io::not_available) : io::Cell(stats::summarize(prof).mean), std::to_string(at_rest) + " of " + std::to_string(runs.size()),
                           mean_or_na(rest_t), stats::summarize(mass).mean, stats::summarize(mass).mean * 1e-3 / fine_mass,
                           stats::summarize(height).mean, stats::summarize(phi).mean, stats::summarize(z).mean, mean_or_na(repose)});
     };
     row(study.fine_ensemble(), 1.0, io::Cell(io::not_available));
-    for (std::size_t i = 0; i < study.runs.size(); ++i) row(study.coarse_ensemble(i), study.runs[i].grain.sf, study.runs[i].grain.exponent);
+    for (std::size_t i = 0; i < study.runs.size(); ++i)
+        if (study.verdicts[i].unusable.empty()) row(study.coarse_ensemble(i), study.runs[i].grain.sf, study.runs[i].grain.exponent);
+    if (study.has_control()) {
+        row(study.dry_fine_ensemble(), 1.0, "dry", true);
+        std::set<std::string> seen;
+        for (std::size_t i = 0; i < study.dry_coarse.size(); ++i)
+            if (study.verdicts[i].unusable.empty() && seen.insert(study.dry_coarse[i].front().key).second) row(study.dry_coarse_ensemble(i), study.runs[i].grain.sf, "dry", true);
+        t.notes.push_back("exponent 'dry': the dry control, the same scene and seeds without liquid (docs/verdicts.md)");
+    }
     t.notes.push_back("the first row is the fine ensemble (S_f = 1, no exponent)");
     t.notes.push_back("profile_distance_pct: mean over the seeds of each run's shape distance from the fine mean shape; for the fine "
                       "ensemble, its own run-to-run scatter (the noise floor)");
@@ -133,6 +176,12 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
     auto add = [&](const slump::StudyRun& r, io::Cell exponent) {
         const auto& x = r.result;
         const auto& c = r.versus_reference;
+        if (!r.unusable.empty()) {  // no column, no measures
+            std::vector<io::Cell> row(t.columns.size(), io::Cell(io::not_available));
+            row[0] = r.grain.sf, row[1] = exponent, row[2] = static_cast<double>(r.scene.seed), row.back() = remarks(r);
+            t.rows.push_back(std::move(row));
+            return;
+        }
         t.rows.push_back({r.grain.sf, exponent, static_cast<double>(r.scene.seed), static_cast<double>(x.particles),
                           static_cast<double>(x.steps + x.pour_steps), x.dt * 1e6, x.wall_s, c.wall_speedup, c.work_speedup, x.slump() * 1e3,
                           x.slump() / x.initial_height, 100 * c.slump_error, x.final.spread * 1e3, 100 * c.spread_error,
@@ -146,6 +195,17 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
         add(study.runs[i], study.runs[i].grain.exponent);
         for (std::size_t j = 0; j < others; ++j) add(study.coarse_seeds[i * others + j], study.runs[i].grain.exponent);
     }
+    // The dry control's runs, each distinct scene once; remarks say what they are.
+    std::set<std::string> seen;
+    auto add_dry = [&](const slump::StudyRun& r) {
+        if (!seen.insert(r.key).second) return;
+        add(r, io::Cell(io::not_available));
+        auto& remark = std::get<std::string>(t.rows.back().back());
+        remark = "dry control" + (remark.empty() ? "" : "; " + remark);
+    };
+    for (const auto& r : study.dry_fine) add_dry(r);
+    for (const auto& e : study.dry_coarse)
+        for (const auto& r : e) add_dry(r);
     t.notes.push_back("rows with S_f = 1 and no exponent: the fine ensemble");
     t.notes.push_back("slump_error_pct_of_height: slump over the fill height minus the fine ensemble's mean, in % of the height");
     t.notes.push_back("spread and profile errors: relative to the fine ensemble's mean spread and mean shape (fringe and empty bins do "
@@ -162,6 +222,7 @@ io::Table best_exponent_table(const slump::Study& study, const std::vector<doubl
                    "slump " + format_short(100 * n.slump_over_height.sd, 3) + " % of the height, spread " +
                        format_short(100 * n.spread.sd / std::max(n.spread.mean, 1e-300), 3) + " %, profile " +
                        format_short(100 * n.profile.mean, 3) + " % (each fine run from the fine mean shape)"}};
+    if (study.has_control()) t.metadata.push_back({"judged", "baseline-corrected (dry control removed)"});
     for (double sf : scale_factors) {
         const auto& b = study.best_at(sf);
         t.rows.push_back({sf, b.exponent, 100 * b.criteria[2].estimate, 100 * b.criteria[0].estimate, 100 * b.criteria[1].estimate,

@@ -1,6 +1,7 @@
 #include "report/table_layout.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/input_error.hpp"
 
@@ -47,6 +48,25 @@ std::size_t key_columns(const io::Table& t) {
         if (std::adjacent_find(keys.begin(), keys.end()) == keys.end()) return k;
     }
     return 1;
+}
+
+// Unit suffixes of the identifiers, longest first, and the words they stand for.
+constexpr std::pair<const char*, const char*> unit_suffixes[] = {
+    {"_pct_of_height", " (% of fill height)"}, {"_n_per_m", " (N/m)"}, {"_m_per_s", " (m/s)"}, {"_kg_per_m3", " (kg/m³)"},
+    {"_fine_radii", " (fine radii)"}, {"_pct", " (%)"}, {"_mm", " (mm)"}, {"_deg", " (deg)"}, {"_us", " (µs)"}, {"_ms", " (ms)"},
+    {"_g", " (g)"}, {"_s", " (s)"}, {"_m", " (m)"}, {"_n", " (N)"}, {"_j", " (J)"}, {"_pa", " (Pa)"}};
+// Words the identifiers abbreviate.
+constexpr std::pair<const char*, const char*> words[] = {
+    {"sf", "S_f"}, {"fhat", "F̂"}, {"hhat", "ĥ"}, {"vhat", "V̂"}, {"k_hat", "k̂"}, {"sd", "sd"}, {"rms", "rms"},
+    {"diff", "difference"}, {"d0", "d₀"}, {"r", "R"}};
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool empty_cell(const io::Cell& c) {
+    const auto* s = std::get_if<std::string>(&c);
+    return s && (s->empty() || *s == io::not_available);
 }
 
 std::vector<io::Table> split_columns(const io::Table& t, std::size_t max_chars) {
@@ -106,6 +126,50 @@ std::vector<io::Table> fit_to_width(const io::Table& t, std::size_t max_chars) {
         if (estimated_width(tt) <= max_chars) return {tt};
     }
     return split_columns(t, max_chars);
+}
+
+std::string heading_of(const std::string& column) {
+    std::string stem = column, unit;
+    for (const auto& [suffix, text] : unit_suffixes)
+        if (ends_with(stem, suffix)) {
+            stem.resize(stem.size() - std::string(suffix).size()), unit = text;
+            break;
+        }
+    for (const auto& [id, text] : words)
+        if (stem == id) return text + unit;
+    std::string out;
+    std::size_t start = 0;
+    while (start <= stem.size()) {
+        const std::size_t end = std::min(stem.find('_', start), stem.size());
+        std::string word = stem.substr(start, end - start);
+        for (const auto& [id, text] : words)
+            if (word == id) word = text;
+        out += (out.empty() ? "" : " ") + word;
+        start = end + 1;
+    }
+    return out + unit;
+}
+
+io::Table for_people(io::Table t) {
+    std::vector<std::string> heads = t.headings.size() == t.columns.size() ? t.headings : std::vector<std::string>{};
+    if (heads.empty())
+        for (const auto& c : t.columns) heads.push_back(heading_of(c));
+    for (auto& n : t.notes)
+        for (std::size_t j = 0; j < t.columns.size(); ++j)
+            if (n.rfind(t.columns[j] + ":", 0) == 0) n = heads[j] + n.substr(t.columns[j].size());
+    std::vector<std::size_t> keep;
+    for (std::size_t j = 0; j < t.columns.size(); ++j)
+        if (t.rows.empty() || std::any_of(t.rows.begin(), t.rows.end(), [&](const auto& row) { return j < row.size() && !empty_cell(row[j]); }))
+            keep.push_back(j);
+    io::Table out;
+    out.title = std::move(t.title), out.metadata = std::move(t.metadata), out.notes = std::move(t.notes);
+    for (std::size_t j : keep) out.columns.push_back(heads[j]);
+    for (const auto& row : t.rows) {
+        std::vector<io::Cell> r;
+        for (std::size_t j : keep) r.push_back(j < row.size() ? row[j] : io::Cell(std::string()));
+        out.rows.push_back(std::move(r));
+    }
+    return out;
 }
 
 }  // namespace demscale::report

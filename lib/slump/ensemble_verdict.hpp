@@ -6,6 +6,11 @@
 //            generator seed so that a verdict repeats) of the distance between the two ensembles'
 //            mean shapes (slump/comparison.hpp), tolerance relative; the distance is ≥ 0, so it
 //            passes when the interval's top lies below the tolerance.
+// Against a dry control (the same seeds of both scenes without their liquid), the same tests judge
+// the difference after the geometry's offset is removed, seed by seed: for slump and spread the
+// wet-minus-dry value of each seed, coarse against fine (Welch t); for the profile the distance
+// ‖(c̄_wet − c̄_dry) − (f̄_wet − f̄_dry)‖ / ‖f̄_wet‖, bootstrapped over the seeds (a seed's wet and dry
+// runs resampled together). docs/verdicts.md says why a dry control and what it cannot remove.
 // It is INCONCLUSIVE, with a reason, where the data cannot decide: fewer than two seeds on a side,
 // or a fine reference slumping less than one coarse diameter (then this scene cannot tell exponents
 // apart by slump). Tolerances below the fine ensemble's own spread draw a warning.
@@ -43,13 +48,25 @@ struct EnsembleVerdict {
     std::vector<Criterion> criteria;   // slump, spread, profile
     stats::Verdict overall = stats::Verdict::inconclusive;
     std::vector<std::string> warnings;
+    std::string unusable;              // non-empty: a run's fill could not be used (why); no criteria, no part of any verdict
+};
+
+// What a wet study compares beside the raw difference: nothing, or a dry control that decides.
+enum class Baseline { none, dry };
+
+// The dry control of one comparison: the same seeds, in the same order, without the liquid.
+struct DryControl {
+    std::vector<const SlumpResult*> fine, coarse;
 };
 
 // Slump over the fill height, s/H₀: the scale-free slump every comparison uses.
 double slump_over_height(const SlumpResult& r);
 
 // fine_radius: m. wet: false adds the note that k has no effect.
+// control: judge the offset-corrected difference (see above); its ensembles must match fine and
+// coarse seed for seed (std::invalid_argument otherwise).
 EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, const std::vector<const SlumpResult*>& coarse,
-                               double sf, double exponent, const Tolerances& tolerances, double fine_radius, bool wet);
+                               double sf, double exponent, const Tolerances& tolerances, double fine_radius, bool wet,
+                               const DryControl* control = nullptr);
 
 }  // namespace demscale::slump

@@ -15,11 +15,18 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 
 #include "dem/particles.hpp"
 #include "slump/slump_scene.hpp"
 
 namespace demscale::slump {
+
+// A fill the cone cannot hold at the scene's mass (the pour jammed, or the spheres do not fit): the
+// run is unusable as a column, which a study reports instead of comparing it.
+struct FillShortfall : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 // Spheres still to insert: what the cone lacks of the fill's volume plus a layer one diameter thick
 // at a solid fraction of 0.5 over its cross-section at the fill height; 0 once it holds that.
@@ -31,9 +38,10 @@ std::size_t pour_batch_size(const SlumpScene& scene, const dem::Particles& pile)
 // opening above it.
 dem::Particles insert_batch(const SlumpScene& scene, const dem::Particles& pile, std::size_t count, unsigned stream);
 
-// Of the spheres wholly inside the cone, those with the lowest centres that weigh fill_mass(scene)
-// to the nearest sphere. Throws std::runtime_error naming the radius when the cone holds less
-// (the pour jammed in the top opening, or the fill does not fit under the cone's top).
+// Of the spheres inside the cone's wall with their centres under its top, those with the lowest
+// centres that weigh fill_mass(scene) to the nearest sphere. Throws std::runtime_error naming the
+// radius (FillShortfall) when the cone holds less by more than half a sphere and 0.5 % (the pour
+// jammed in the top opening, or the fill does not fit under the cone's top).
 dem::Particles cut_to_mass(const SlumpScene& scene, const dem::Particles& pile);
 
 // Pours and cuts to the fill's mass. settle(pile) runs the engine on the pile with the cone in place until rest

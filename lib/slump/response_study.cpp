@@ -5,11 +5,18 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/input_error.hpp"
 
 namespace demscale::slump {
+
+std::string ResponseEnsemble::unusable() const {
+    for (const auto& r : runs)
+        if (!r.unusable.empty()) return "seed " + std::to_string(r.scene.seed) + ": " + r.unusable;
+    return "";
+}
 
 bool ResponseEnsemble::all_at_rest() const {
     return std::all_of(runs.begin(), runs.end(), [](const StudyRun& r) { return r.result.came_to_rest; });
@@ -37,6 +44,7 @@ ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int s
 }
 
 void summarize_ensemble(ResponseEnsemble& e, double bottom_diameter) {
+    if (!e.unusable().empty()) return;  // no column to measure
     std::vector<double> s, d;
     for (const auto& r : e.runs) s.push_back(slump_over_height(r.result)), d.push_back(r.result.final.spread / bottom_diameter);
     e.slump_over_height = stats::summarize(s);
@@ -47,6 +55,7 @@ stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& level
     stats::ResponseCurve c;
     c.sf = sf;
     for (const auto& e : levels) {
+        if (!e.unusable().empty()) continue;  // a level whose fills the cone could not hold is no point of the curve
         stats::ResponseLevel l;
         l.x = std::log(e.gamma);
         for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result));
@@ -119,6 +128,8 @@ std::vector<StudyRun*> ResponseStudy::all_runs() {
     for (auto& levels : coarse)
         for (auto& e : levels)
             for (auto& r : e.runs) all.push_back(&r);
+    for (auto& e : dry_control)
+        for (auto& r : e.runs) all.push_back(&r);
     return all;
 }
 
@@ -132,6 +143,14 @@ ResponseStudy plan_response_runs(const ResponsePlan& plan) {
     for (double sf : plan.scale_factors) {
         study.coarse.emplace_back();
         for (double f : factors) study.coarse.back().push_back(ensemble(plan.fine, sf, f * gamma * std::pow(sf, plan.offset_exponent), plan.seeds));
+    }
+    if (study.wet && plan.baseline == Baseline::dry) {
+        SlumpScene dry = plan.fine;
+        dry.wet = dry.wet_walls = false;
+        study.dry_control.push_back(ensemble(dry, 1, 0, plan.seeds));
+        for (double sf : plan.scale_factors) study.dry_control.push_back(ensemble(dry, sf, 0, plan.seeds));
+        for (auto& e : study.dry_control)
+            for (auto& r : e.runs) r.label += " control";
     }
     return study;
 }
@@ -148,10 +167,30 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
     for (auto& e : study.fine) summarize_ensemble(e, d0);
     for (auto& levels : study.coarse)
         for (auto& e : levels) summarize_ensemble(e, d0);
+    for (auto& e : study.dry_control) summarize_ensemble(e, d0);
+    for (const auto& e : study.dry_control)
+        if (const auto why = e.unusable(); !why.empty())
+            throw std::runtime_error("the dry control at S_f = " + format_short(e.sf, 3) + ", " + why);
     if (study.wet) {
         study.fine_curve = curve(1, study.fine);
-        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
+        if (study.fine_curve.levels.size() < 2)
+            throw std::runtime_error("fewer than two fine levels whose fills the cone could hold: no fine response curve");
+        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s) {
             study.coarse_curves.push_back(curve(plan.scale_factors[s], study.coarse[s]));
+            if (study.coarse_curves.back().levels.empty())
+                throw std::runtime_error("S_f = " + format_short(plan.scale_factors[s], 3) + ": no level's fills could be used (" +
+                                         study.coarse[s].front().unusable() + ")");
+        }
+        if (study.has_control()) {
+            study.raw_estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+            auto control = [](const ResponseEnsemble& e) {
+                std::vector<double> y;
+                for (const auto& r : e.runs) y.push_back(slump_over_height(r.result));
+                return y;
+            };
+            study.fine_curve.control = control(study.dry_control.front());
+            for (std::size_t s = 0; s < study.coarse_curves.size(); ++s) study.coarse_curves[s].control = control(study.dry_control[s + 1]);
+        }
         study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
         study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
     } else {

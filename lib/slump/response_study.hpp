@@ -4,6 +4,9 @@
 // factors moved by a guessed exponent (default 2, between the groups' 1 and 3) so that its levels
 // straddle the fine transition for any k near it. The response is slump over fill height, and the
 // spread (diameter at half height) over the cone's bottom diameter. k̂ per S_f and jointly: stats/curve_shift.hpp.
+// A wet scene's study also runs its dry control by default (the fine and each coarse scene without
+// liquid, the same seeds): k̂ is then measured after subtracting the dry coarse − fine offset
+// (stats/curve_shift.hpp, baseline), and once more raw, for comparison.
 // A dry scene has no cohesion to vary: its one level per S_f is the dry control, the coarse −
 // fine difference that no exponent can remove.
 #pragma once
@@ -23,6 +26,7 @@ struct ResponsePlan {
     std::vector<double> factors = {0.5, 1, 2, 4};  // of the scene's γ, ascending (dry: ignored)
     double offset_exponent = 2;  // coarse levels at f·γ·S_f^offset
     int seeds = 8;
+    Baseline baseline = Baseline::dry;  // wet scenes: the dry control beside the levels
     BatchOptions batch;
     stats::ShiftSearch search;
 };
@@ -33,6 +37,7 @@ struct ResponseEnsemble {
     std::vector<StudyRun> runs;  // one per seed
     stats::Summary slump_over_height, spread_over_diameter;
     bool all_at_rest() const;
+    std::string unusable() const;  // the first unusable fill's reason (StudyRun::unusable); empty: every fill a column
 };
 
 // Coarse − fine at one S_f on a dry scene: the baseline error of coarse-graining the dry laws.
@@ -48,10 +53,13 @@ struct ResponseStudy {
     bool wet = true;
     std::vector<ResponseEnsemble> fine;                 // per level, ascending γ
     std::vector<std::vector<ResponseEnsemble>> coarse;  // per S_f (plan order), per level
+    std::vector<ResponseEnsemble> dry_control;          // wet with a baseline: fine, then per S_f (plan order), no liquid
     std::vector<StudyRun*> all_runs();                  // fine, then coarse
     stats::ResponseCurve fine_curve;                    // slump over height against ln γ
     std::vector<stats::ResponseCurve> coarse_curves;
-    std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only)
+    std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only); baseline-corrected with a dry control
+    std::vector<stats::ExponentEstimate> raw_estimates; // the same without the dry control's offset (with a dry control only)
+    bool has_control() const { return !dry_control.empty(); }
     std::vector<stats::SplitLevel> split;               // levels whose seeds split (wet only; stats::split_levels)
     std::vector<DryBaseline> baselines;                 // dry only
     double wall_s = 0;

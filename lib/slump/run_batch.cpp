@@ -12,6 +12,7 @@
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "slump/pour.hpp"
 
 namespace demscale::slump {
 
@@ -44,12 +45,18 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
     if (o.cache_dir) cache.emplace(*o.cache_dir);
     std::vector<StudyRun*> pending;
     for (auto& [key, r] : unique) {
-        if (cache)
+        if (cache) {
             if (auto hit = cache->load(key)) {
                 r->result = std::move(*hit);
                 r->from_cache = true;
                 continue;
             }
+            if (auto why = cache->load_unusable(key)) {  // its pour failed before: not poured again
+                r->unusable = std::move(*why);
+                r->from_cache = true;
+                continue;
+            }
+        }
         pending.push_back(r);
     }
     const double radius = o.reference_radius_m;
@@ -146,6 +153,19 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
                 const std::lock_guard lock(log_mutex);
                 ++interrupted;
                 if (!failure) failure = std::current_exception();
+            } catch (const FillShortfall& e) {  // not a failure of the batch: a run the study reports as unusable
+                const std::lock_guard lock(log_mutex);
+                r.unusable = e.what();
+                if (cache) cache->store_unusable(r.key, r.unusable);
+                running[job].clear();
+                ++finished;
+                if (log) log("[" + std::to_string(finished) + "/" + std::to_string(pending.size()) + "] " + describe(r) + ": UNUSABLE, " + e.what());
+            } catch (const InputError&) {
+                const std::lock_guard lock(log_mutex);
+                if (!failure) failure = std::current_exception();
+            } catch (const std::exception& e) {  // name the run that failed
+                const std::lock_guard lock(log_mutex);
+                if (!failure) failure = std::make_exception_ptr(std::runtime_error(describe(r) + ": " + e.what()));
             } catch (...) {
                 const std::lock_guard lock(log_mutex);
                 if (!failure) failure = std::current_exception();
@@ -164,7 +184,7 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
 
     for (auto* r : all) {
         const StudyRun& ran = *unique.at(r->key);
-        if (r != &ran) r->result = ran.result, r->from_cache = ran.from_cache;
+        if (r != &ran) r->result = ran.result, r->from_cache = ran.from_cache, r->unusable = ran.unusable;
         r->warnings = geometry_warnings(r->scene, r->result.particles);
     }
 }

@@ -27,6 +27,7 @@ struct StudyRun {
     bool from_cache = false;
     RunComparison versus_reference;     // against the fine ensemble's means
     std::string label;                  // for progress lines; empty: from grain and seed
+    std::string unusable;               // why its fill could not be used as a column (FillShortfall); empty: a column
 };
 
 struct BatchOptions {

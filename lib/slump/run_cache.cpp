@@ -65,6 +65,25 @@ void RunCache::store(const std::string& key, const SlumpResult& r, int threads) 
     io::write_file_atomically(dir_ / (key + ".json"), j.dump(1) + "\n");
 }
 
+std::optional<std::string> RunCache::load_unusable(const std::string& key) const {
+    std::ifstream in(dir_ / (key + ".unusable"));
+    if (!in) return std::nullopt;
+    try {
+        const auto j = nlohmann::json::parse(in);
+        if (j.at("format").get<int>() != cache_format) return std::nullopt;
+        return j.at("unusable").get<std::string>();
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+void RunCache::store_unusable(const std::string& key, const std::string& reason) const {
+    nlohmann::json j;
+    j["format"] = cache_format;
+    j["unusable"] = reason;
+    io::write_file_atomically(dir_ / (key + ".unusable"), j.dump(1) + "\n");
+}
+
 std::optional<SlumpResult> RunCache::load(const std::string& key) const {
     std::ifstream in(dir_ / (key + ".json"));
     if (!in || !std::filesystem::exists(dir_ / (key + ".csv"))) return std::nullopt;

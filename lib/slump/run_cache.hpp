@@ -22,6 +22,10 @@ public:
     // nullopt when absent or unreadable (a stale format counts as absent).
     std::optional<SlumpResult> load(const std::string& key) const;
     void store(const std::string& key, const SlumpResult& r, int threads) const;
+    // A run whose fill the cone could not hold (FillShortfall): DIR/<key>.unusable holds the reason,
+    // so that a later call reports it without pouring again. nullopt when absent or stale.
+    std::optional<std::string> load_unusable(const std::string& key) const;
+    void store_unusable(const std::string& key, const std::string& reason) const;
     const std::filesystem::path& dir() const { return dir_; }
 
 private:

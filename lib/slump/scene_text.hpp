@@ -21,6 +21,7 @@ namespace demscale::slump {
 // 8: every scene reorders its spheres in space, not only large ones (the pair order follows);
 // 9: the sort lays its layers along the scene's longest side, not always z (the pair order follows).
 // 10: fills cut to the scene's mass (fill_solid_fraction); heights, spreads and profiles from the surface.
+// 11: the bridge's normal lubrication takes the finite-volume factor by default (liquid.lubrication).
 inline constexpr int cache_format = 11;
 
 // The lines, in a fixed order: the tool's version and cache format, geometry, which laws act, the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/input_error.hpp"
 
@@ -10,14 +11,15 @@ namespace demscale::slump {
 
 stats::Verdict Study::overall() const {
     std::vector<stats::Verdict> v;
-    for (const auto& e : verdicts) v.push_back(e.overall);
+    for (const auto& e : deciding())
+        if (e.unusable.empty()) v.push_back(e.overall);
     return v.empty() ? stats::Verdict::inconclusive : stats::combine(v);
 }
 
 std::vector<double> Study::judged_scale_factors() const {
     std::vector<double> sfs;
-    for (const auto& v : verdicts)
-        if (std::find(sfs.begin(), sfs.end(), v.sf) == sfs.end()) sfs.push_back(v.sf);
+    for (const auto& v : deciding())
+        if (v.unusable.empty() && std::find(sfs.begin(), sfs.end(), v.sf) == sfs.end()) sfs.push_back(v.sf);
     return sfs;
 }
 
@@ -34,10 +36,44 @@ std::vector<const SlumpResult*> Study::coarse_ensemble(std::size_t i) const {
     return c;
 }
 
+std::vector<const StudyRun*> Study::fine_runs() const {
+    std::vector<const StudyRun*> f = {&reference};
+    for (const auto& r : replicas) f.push_back(&r);
+    for (const auto& r : dry_fine) f.push_back(&r);
+    return f;
+}
+
+std::string Study::unusable(std::size_t i) const {
+    std::vector<const StudyRun*> ensemble = {&runs.at(i)};
+    const std::size_t others = coarse_seeds.size() / runs.size();
+    for (std::size_t j = 0; j < others; ++j) ensemble.push_back(&coarse_seeds.at(i * others + j));
+    if (has_control())
+        for (const auto& r : dry_coarse.at(i)) ensemble.push_back(&r);
+    std::size_t n = 0;
+    std::string first;
+    for (const auto* r : ensemble)
+        if (!r->unusable.empty() && n++ == 0)
+            first = std::string(r->scene.wet ? "" : "dry control, ") + "seed " + std::to_string(r->scene.seed) + ": " + r->unusable;
+    if (n == 0) return "";
+    return std::to_string(n) + " of " + std::to_string(ensemble.size()) + " fills unusable (" + first + ")";
+}
+
+std::vector<const SlumpResult*> Study::dry_fine_ensemble() const {
+    std::vector<const SlumpResult*> f;
+    for (const auto& r : dry_fine) f.push_back(&r.result);
+    return f;
+}
+
+std::vector<const SlumpResult*> Study::dry_coarse_ensemble(std::size_t i) const {
+    std::vector<const SlumpResult*> c;
+    for (const auto& r : dry_coarse.at(i)) c.push_back(&r.result);
+    return c;
+}
+
 const EnsembleVerdict& Study::best_at(double sf) const {
     const EnsembleVerdict* best = nullptr;
-    for (const auto& v : verdicts)
-        if (v.sf == sf && (!best || v.criteria.at(2).estimate < best->criteria.at(2).estimate)) best = &v;
+    for (const auto& v : deciding())
+        if (v.sf == sf && v.unusable.empty() && (!best || v.criteria.at(2).estimate < best->criteria.at(2).estimate)) best = &v;
     if (!best) throw InputError("--sf", format_number(sf), "one of the study's scale factors");
     return *best;
 }
@@ -52,11 +88,19 @@ void validate_plan(const StudyPlan& plan) {
         for (double sf : plan.scale_factors) check_slump_time_step(coarse_grained(plan.fine, {sf, k, plan.scaled}), plan.force_dt);
 }
 
+std::vector<const StudyRun*> Study::all_runs() const {
+    const auto all = const_cast<Study*>(this)->all_runs();  // the same list, read only
+    return {all.begin(), all.end()};
+}
+
 std::vector<StudyRun*> Study::all_runs() {
     std::vector<StudyRun*> all = {&reference};
     for (auto& r : replicas) all.push_back(&r);
     for (auto& r : runs) all.push_back(&r);
     for (auto& r : coarse_seeds) all.push_back(&r);
+    for (auto& r : dry_fine) all.push_back(&r);
+    for (auto& e : dry_coarse)
+        for (auto& r : e) all.push_back(&r);
     return all;
 }
 
@@ -83,7 +127,49 @@ Study plan_study(const StudyPlan& plan) {
             for (int i = 1; i < plan.seeds; ++i) study.coarse_seeds.push_back(with_seed(r, i));
             study.runs.push_back(std::move(r));
         }
+    // The dry control: each scene without its liquid (equal dry scenes of several k run once).
+    if (plan.fine.wet && plan.baseline == Baseline::dry) {
+        auto dry = [&](StudyRun r) {
+            r.scene.wet = r.scene.wet_walls = false;
+            r.label = (r.grain.sf == 1 ? std::string("fine") : "S_f = " + format_short(r.grain.sf, 3)) + ", dry control";
+            return r;
+        };
+        for (int i = 0; i < plan.seeds; ++i) study.dry_fine.push_back(dry(with_seed(study.reference, i)));
+        for (const auto& r : study.runs) {
+            study.dry_coarse.emplace_back();
+            for (int i = 0; i < plan.seeds; ++i) study.dry_coarse.back().push_back(dry(with_seed(r, i)));
+        }
+    }
     return study;
+}
+
+void judge_study(Study& study, const StudyPlan& plan) {
+    study.verdicts.clear(), study.corrected.clear(), study.controls.clear();
+    for (const auto* r : study.fine_runs())
+        if (!r->unusable.empty()) throw std::runtime_error("the fine scene's fill, seed " + std::to_string(r->scene.seed) + ": " + r->unusable);
+    double reach = 0;  // the reference's radial grid covers every pile of the study
+    for (const auto* r : study.all_runs()) reach = std::max(reach, r->result.final.spread_max);
+    study.fine = fine_reference(study.fine_ensemble(), plan.fine.radius_m, reach);
+    study.noise = noise_floor(study.fine_ensemble(), study.fine);
+    for (auto* r : study.all_runs())
+        if (r->unusable.empty()) r->versus_reference = compare_to(study.fine, r->result);
+    for (std::size_t i = 0; i < study.runs.size(); ++i) {
+        const double sf = study.runs[i].grain.sf, k = study.runs[i].grain.exponent;
+        if (const auto why = study.unusable(i); !why.empty()) {  // a fill the cone could not hold: reported, not judged
+            EnsembleVerdict v;
+            v.sf = sf, v.exponent = k, v.unusable = why;
+            study.verdicts.push_back(v);
+            if (study.has_control()) study.corrected.push_back(v), study.controls.push_back(v);
+            continue;
+        }
+        study.verdicts.push_back(judge_ensemble(study.fine_ensemble(), study.coarse_ensemble(i), sf, k, study.tolerances,
+                                                plan.fine.radius_m, plan.fine.wet));
+        if (!study.has_control()) continue;
+        const DryControl control{study.dry_fine_ensemble(), study.dry_coarse_ensemble(i)};
+        study.corrected.push_back(judge_ensemble(study.fine_ensemble(), study.coarse_ensemble(i), sf, k, study.tolerances,
+                                                 plan.fine.radius_m, true, &control));
+        study.controls.push_back(judge_ensemble(control.fine, control.coarse, sf, k, study.tolerances, plan.fine.radius_m, true));
+    }
 }
 
 Study run_study(const StudyPlan& plan, const std::function<void(const std::string&)>& log) {
@@ -93,14 +179,7 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
     const auto all = study.all_runs();
     run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m, plan.live, plan.slurm}, log);
 
-    double reach = 0;  // the reference's radial grid covers every pile of the study
-    for (const auto* r : all) reach = std::max(reach, r->result.final.spread_max);
-    study.fine = fine_reference(study.fine_ensemble(), plan.fine.radius_m, reach);
-    study.noise = noise_floor(study.fine_ensemble(), study.fine);
-    for (auto* r : all) r->versus_reference = compare_to(study.fine, r->result);
-    for (std::size_t i = 0; i < study.runs.size(); ++i)
-        study.verdicts.push_back(judge_ensemble(study.fine_ensemble(), study.coarse_ensemble(i), study.runs[i].grain.sf,
-                                                study.runs[i].grain.exponent, study.tolerances, plan.fine.radius_m, plan.fine.wet));
+    judge_study(study, plan);
     study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return study;
 }

@@ -1,7 +1,10 @@
 // A coarse-graining study of the slump test: an ensemble of fine runs (seeds seed, seed+1, …) and,
 // for every candidate exponent k and scale factor S_f, an ensemble of coarse runs with the same
-// seeds, judged against the fine ensemble (slump/ensemble_verdict.hpp). The runs go through
-// run_batch: side by side, cached, resumable.
+// seeds, judged against the fine ensemble (slump/ensemble_verdict.hpp). A wet scene's study also
+// runs its dry control by default: the fine and every coarse scene without the liquid, the same
+// seeds, so that each coarse ensemble is judged twice, raw and after removing the offset the same
+// S_f shows without any cohesion (docs/verdicts.md). The runs go through run_batch: side by side,
+// cached, resumable.
 #pragma once
 
 #include <filesystem>
@@ -25,6 +28,7 @@ struct StudyPlan {
     std::vector<std::string> scaled;  // parameters scaled by the implied basis (coarse_grain.hpp)
     Tolerances tolerances;            // usually the scene's
     int seeds = 8;                    // runs per ensemble, fine and each coarse (S_f, k): seeds seed … seed+seeds−1
+    Baseline baseline = Baseline::dry;  // ignored for a dry scene (its raw verdict is its control)
     int jobs = 1, threads_per_job = 1;
     std::optional<std::filesystem::path> cache_dir;  // none: run everything
     bool force_dt = false;
@@ -44,19 +48,33 @@ struct Study {
     std::vector<StudyRun> replicas;     // the fine runs with the other seeds
     std::vector<StudyRun> runs;         // coarse runs with the scene's seed: exponent-major, then the judged S_f in the plan's order
     std::vector<StudyRun> coarse_seeds; // coarse runs with the other seeds, in the same order, seed-minor
-    std::vector<EnsembleVerdict> verdicts;  // one per entry of runs
+    std::vector<EnsembleVerdict> verdicts;  // raw: one per entry of runs
+    std::vector<StudyRun> dry_fine;                 // with a dry control: the fine scene without liquid, every seed, fine_ensemble()'s order
+    std::vector<std::vector<StudyRun>> dry_coarse;  // per entry of runs: its coarse scene without liquid, coarse_ensemble()'s order
+    std::vector<EnsembleVerdict> corrected;         // per entry of runs: after removing the dry control's offset
+    std::vector<EnsembleVerdict> controls;          // per entry of runs: the dry coarse ensemble against the dry fine one
     FineReference fine;                 // the fine ensemble's means and mean shape
     NoiseFloor noise;                   // the fine ensemble's own spread
     Tolerances tolerances;
     double wall_s = 0;                  // this call's wall time (cached runs cost nothing)
-    // Over the judged ensembles (geometry-limited S_f have none): FAIL if any fails, else INCONCLUSIVE
-    // if any is, else PASS; INCONCLUSIVE when no S_f could be judged.
+    bool has_control() const { return !dry_fine.empty(); }
+    // The verdicts that decide: baseline-corrected with a dry control, else raw.
+    const std::vector<EnsembleVerdict>& deciding() const { return has_control() ? corrected : verdicts; }
+    // Over the deciding verdicts (geometry-limited S_f have none): FAIL if any fails, else
+    // INCONCLUSIVE if any is, else PASS; INCONCLUSIVE when no S_f could be judged.
     stats::Verdict overall() const;
     std::vector<double> judged_scale_factors() const;  // the S_f with verdicts, in the plan's order
     std::vector<const SlumpResult*> fine_ensemble() const;
     std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds
-    std::vector<StudyRun*> all_runs();  // reference, replicas, runs, coarse_seeds
-    // The verdict with the smallest profile distance at this S_f, over the exponents.
+    std::vector<const StudyRun*> fine_runs() const;  // the fine ensemble's runs and its dry control's
+    // Why ensemble `run` (its coarse runs and their dry control) cannot be judged: how many of its
+    // fills the cone could not hold, and the first one's reason; empty when every fill is a column.
+    std::string unusable(std::size_t run) const;
+    std::vector<const SlumpResult*> dry_fine_ensemble() const;
+    std::vector<const SlumpResult*> dry_coarse_ensemble(std::size_t run) const;
+    std::vector<StudyRun*> all_runs();  // reference, replicas, runs, coarse_seeds, then the dry control
+    std::vector<const StudyRun*> all_runs() const;
+    // The deciding verdict with the smallest profile distance at this S_f, over the exponents.
     const EnsembleVerdict& best_at(double sf) const;
 };
 
@@ -65,6 +83,12 @@ void validate_plan(const StudyPlan& plan);
 
 // The study's runs, not run yet (results empty), after validate_plan.
 Study plan_study(const StudyPlan& plan);
+
+// The verdicts of a study whose runs have results: the fine reference and noise, each run against
+// it, and per coarse ensemble the raw verdict and, with a dry control, the corrected one and the
+// control's; an ensemble with an unusable fill gets a verdict that says so and nothing else.
+// Throws std::runtime_error when a fine fill is unusable (the scene itself cannot be filled).
+void judge_study(Study& study, const StudyPlan& plan);
 
 // Validates the whole plan (every coarse scene) before running anything. Progress lines go to log.
 // Throws InputError for a bad plan and std::runtime_error when a run fails.

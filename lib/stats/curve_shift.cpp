@@ -21,7 +21,10 @@ struct MeanCurve {
     std::shared_ptr<gsl_interp> steffen;  // three or more levels; else linear
 };
 
-MeanCurve means_of(const ResponseCurve& c) {
+double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
+
+// offset: subtracted from every level's mean (a coarse curve's control offset).
+MeanCurve means_of(const ResponseCurve& c, double offset = 0) {
     std::vector<const ResponseLevel*> sorted;
     for (const auto& l : c.levels) sorted.push_back(&l);
     std::sort(sorted.begin(), sorted.end(), [](const auto* a, const auto* b) { return a->x < b->x; });
@@ -30,7 +33,7 @@ MeanCurve means_of(const ResponseCurve& c) {
     for (const auto* l : sorted) {
         if (!m.x.empty() && !(l->x > m.x.back())) throw std::invalid_argument("two response levels at the same x");
         m.x.push_back(l->x);
-        m.y.push_back(mean_of(*l));
+        m.y.push_back(mean_of(*l) - offset);
     }
     if (m.x.size() >= 3) {
         m.steffen.reset(gsl_interp_alloc(gsl_interp_steffen, m.x.size()), gsl_interp_free);
@@ -96,6 +99,10 @@ ResponseCurve resampled(const ResponseCurve& c, std::mt19937_64& rng) {
         std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
         for (auto& y : r.levels[i].y) y = seeds[pick(rng)];
     }
+    if (!c.control.empty()) {
+        std::uniform_int_distribution<std::size_t> pick(0, c.control.size() - 1);
+        for (auto& y : r.control) y = c.control[pick(rng)];
+    }
     return r;
 }
 
@@ -115,6 +122,11 @@ void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) 
 }  // namespace
 
 double interpolate_response(const ResponseCurve& fine, double x) { return interpolate(means_of(fine), x); }
+
+double control_offset(const ResponseCurve& fine, const ResponseCurve& coarse) {
+    if (fine.control.empty() || coarse.control.empty()) return 0.0;
+    return mean_of(coarse.control) - mean_of(fine.control);
+}
 
 std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
     std::vector<const ResponseCurve*> curves{&fine};
@@ -139,7 +151,7 @@ double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseC
     check(fine, coarse);
     std::vector<MeanCurve> c;
     std::size_t levels = 0;
-    for (const auto& curve : coarse) c.push_back(means_of(curve)), levels += curve.levels.size();
+    for (const auto& curve : coarse) c.push_back(means_of(curve, control_offset(fine, curve))), levels += curve.levels.size();
     return std::sqrt(objective(means_of(fine), c, k) / static_cast<double>(levels));
 }
 
@@ -157,7 +169,7 @@ std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const
     auto estimate_all = [&](const ResponseCurve& f, const std::vector<ResponseCurve>& cs) {
         const MeanCurve fm = means_of(f);
         std::vector<MeanCurve> cm;
-        for (const auto& c : cs) cm.push_back(means_of(c));
+        for (const auto& c : cs) cm.push_back(means_of(c, control_offset(f, c)));
         std::vector<Shift> k;
         for (const auto& set : sets) {
             std::vector<MeanCurve> chosen;
@@ -189,6 +201,7 @@ std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const
         std::vector<ResponseCurve> chosen;
         for (std::size_t i : sets[s]) chosen.push_back(coarse[i]);
         e.rms = shift_residual_rms(fine, chosen, e.k);
+        if (chosen.size() == 1) e.offset = control_offset(fine, chosen.front());
         const double margin = 0.051;  // one grid step: an interval touching a bound reached it
         e.determined = k_hat[s].unique && e.ci.low > search.k_min + margin && e.ci.high < search.k_max - margin;
         for (const SplitLevel& l : split)

@@ -15,6 +15,12 @@
 // at its minimum (the coarse levels lie on the plateaus: many shifts fit equally) or the interval
 // reaches the search bounds.
 //
+// Baseline: a curve may carry a control, the same response of the same seeds without the cohesion
+// (for the slump test: the dry scene). When the fine curve and a coarse curve both carry one, the
+// coarse means are compared after subtracting the offset mean(coarse control) − mean(fine control):
+// the difference that S_f makes without any cohesion is not booked as a shift in k. The bootstrap
+// resamples the controls' seeds too, so the interval carries the offset's uncertainty.
+//
 // Split levels: a level whose seeds fall at both ends of the response (a column that stood and one
 // that slumped at the same cohesion) is a coin toss that a bootstrap over a few seeds cannot weigh:
 // the interval then understates the uncertainty, and the estimate says how many such levels it
@@ -36,7 +42,11 @@ struct ResponseLevel {
 struct ResponseCurve {
     double sf = 1;                     // scale factor of its particles (fine: 1)
     std::vector<ResponseLevel> levels; // in any order
+    std::vector<double> control;       // the response without cohesion, one value per seed (empty: none)
 };
+
+// mean(coarse.control) − mean(fine.control), 0 unless both carry a control.
+double control_offset(const ResponseCurve& fine, const ResponseCurve& coarse);
 
 struct ShiftSearch {
     double k_min = -2, k_max = 6;
@@ -49,6 +59,7 @@ struct ExponentEstimate {
     double k = 0;             // k̂
     Interval ci;              // 95 % percentile bootstrap interval
     double rms = 0;           // root mean square residual of the coarse means at k̂
+    double offset = 0;        // the control offset subtracted from the coarse means (one S_f; 0 jointly or without controls)
     bool determined = false;  // a unique minimum, and the interval inside the search bounds
     std::size_t split_levels = 0;  // levels it rests on (the fine curve's and its coarse curves') that split
 };

@@ -247,12 +247,18 @@ case $case_name in
     # Loose tolerances pass (exit 0), tight ones fail (exit 1) on the very same runs; one seed cannot
     # decide (INCONCLUSIVE, exit 4).
     expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-slump 10 --tol-spread 10 --tol-profile 10
-    grep -q '6 distinct runs' "$work/out" || fail "study did not say what it runs"
+    grep -q '12 distinct runs' "$work/out" || fail "study did not say what it runs (3 seeds: fine, S_f 1.4, and both dry)"
+    grep -q 'baseline-corrected' "$work/out" && grep -q '(decides)' "$work/out" || fail "the baseline-corrected verdict does not say it decides"
+    grep -q 'dry control' "$work/out" || fail "the dry control is not shown beside the verdicts"
     grep -q 'left' "$work/out" || fail "no estimate of the time left"
     expect 1 'verdict: FAIL' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-profile 1e-6
     grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
     expect 4 'verdict: INCONCLUSIVE' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 1 --tol-slump 10 --tol-spread 10 --tol-profile 10
     grep -q 'fewer than two seeds' "$work/out" || fail "INCONCLUSIVE without its reason"
+    expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-slump 10 --tol-spread 10 --tol-profile 10 --baseline none
+    grep -q 'dry control' "$work/out" && fail "--baseline none still shows a dry control"
+    grep -q 'the raw comparison' "$work/out" || fail "--baseline none does not say the raw comparison decides"
+    expect 2 '--baseline = wet' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --baseline wet
     expect 1 '"verdict": "FAIL"' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-profile 1e-6 --format json
     for f in check_k1.csv check_k1_verdicts.csv check_k1_profiles.csv check_k1_profiles.gp check_k1_error_vs_k.gp; do
       [ -s "$work/c/$f" ] || fail "$f missing"
@@ -275,7 +281,7 @@ case $case_name in
     # Exit 0 (k determined) or 4 (undetermined) are both answers; the files and the summary must be there.
     "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1; rc=$?
     [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { cat "$work/out" >&2; fail "exit $rc"; }
-    grep -q '12 distinct runs' "$work/out" || fail "did not say what it runs (3 levels x 2 seeds, fine and S_f = 1.4)"
+    grep -q '16 distinct runs' "$work/out" || fail "did not say what it runs (3 levels x 2 seeds, fine and S_f = 1.4, and the dry control)"
     grep -q 'left' "$work/out" || fail "no estimate of the time left"
     grep -q '^S_f = 1.4: k-hat = ' "$work/out" || fail "no estimate printed"
     grep -q '6 fine runs (3 levels x 2 seeds)' "$work/out" || fail "cost of the fine curve not stated"
@@ -283,7 +289,10 @@ case $case_name in
       [ -s "$work/e/$f" ] || fail "$f missing"
     done
     grep -qi 'nan\|inf' "$work/e/estimate_exponent.csv" "$work/e/estimate_response.csv" && fail "NaN or inf in the estimate"
-    [ "$(grep -c '^1.4,' "$work/e/estimate_response.csv")" -eq 3 ] || fail "not three coarse levels"
+    [ "$(grep -c '^1.4,[0-9]' "$work/e/estimate_response.csv")" -eq 3 ] || fail "not three coarse levels"
+    [ "$(grep -c '^1.4,n/a' "$work/e/estimate_response.csv")" -eq 1 ] || fail "no dry control at S_f = 1.4"
+    grep -q '^1.4,baseline-corrected,' "$work/e/estimate_exponent.csv" || fail "no baseline-corrected estimate"
+    grep -q '^1.4,raw,' "$work/e/estimate_exponent.csv" || fail "no raw estimate beside it"
     grep -v '^#' "$work/e/estimate_response.csv" | head -1 | grep -q ',seeds_split$' || fail "response table does not say which levels split"
     grep -v '^#' "$work/e/estimate_exponent.csv" | head -1 | grep -q ',split_levels,' || fail "estimates do not count the split levels they rest on"
     "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1
@@ -317,17 +326,22 @@ case $case_name in
     # The report shows Table 1 transposed (one column per radius) to 4 significant digits; each
     # quantity's row must be demscale table's full-precision CSV column, rounded by printf.
     "$demscale" table --format csv 2>/dev/null | grep -v '^#' >"$work/table.csv" || fail "table failed"
-    for col in mass_g v_mm3 vhat a c fc_contact_n hhat_rupture sigma_contact_pa_k1 sigma_contact_pa_k3; do
+    # The report heads its rows in words (the CSV keeps the identifiers).
+    declare -A heading=([mass_g]='particle mass (g)' [v_mm3]='bridge liquid V (mm³)' [vhat]='V̂ = V/R³' [a]='Mikami A'
+      [c]='Mikami C' [fc_contact_n]='bridge force at contact, physical γ (N)' [hhat_rupture]='rupture gap ĥ_c (gap/R)'
+      [sigma_contact_pa_k1]='bridge stress F/(π R²) at k = 1 (Pa)' [sigma_contact_pa_k3]='bridge stress F/(π R²) at k = 3 (Pa)')
+    for col in "${!heading[@]}"; do
       want=$(awk -F, -v c="$col" 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == c) k = i; next} {printf " %.4g |", $k}' "$work/table.csv")
-      grep -E "^\| $col +\|" "$md" | tr -s ' ' | grep -qF "| $col |$want" ||
-        fail "Table 1's $col in the report differs from demscale table (want |$want)"
+      tr -s ' ' <"$md" | grep -qF "| ${heading[$col]} |$want" ||
+        fail "Table 1's $col in the report differs from demscale table (want | ${heading[$col]} |$want)"
     done
+    grep -q 'fhat_\|_pct\b\|smallest_tolerances' "$md" && fail "the report shows CSV identifiers as headings"
     "$demscale" sweep --exponents 1,3 --sf 1.4 --seeds 3 --scene "$src/data/scenes/small_wet.toml" --cache "$work/cache" \
       --out "$work/s" --no-png --format markdown >"$work/sweep.md" 2>"$work/sweep.err" || fail "sweep failed"
     grep -q '0 to run' "$work/sweep.err" || fail "sweep did not reuse the report's runs"
     # The verdict rows (estimates with their intervals, up to the verdict; the report may set the
     # columns after it in a second table), spacing aside, are sweep's.
-    grep -E '^\| +1\.4 \|.*\] (FAIL|PASS|INCONCLUSIVE) \|' "$work/sweep.md" | tr -s ' ' | sed -E 's/^(([^|]*\|){8}).*/\1/' >"$work/rows"
+    grep -E '^\| +1\.4 \|.*baseline-corrected.*\] (FAIL|PASS|INCONCLUSIVE) \|' "$work/sweep.md" | tr -s ' ' | sed -E 's/^(([^|]*\|){8}).*/\1/' >"$work/rows"
     [ "$(wc -l <"$work/rows")" -eq 2 ] || fail "sweep verdict rows (k = 1 and 3): $(cat "$work/rows")"
     tr -s ' ' <"$md" | grep -qFf "$work/rows" || fail "verdict rows in the report differ from demscale sweep"
     [ "$(tr -s ' ' <"$md" | grep -cFf "$work/rows")" -ge 2 ] || fail "a verdict row is missing from the report" ;;

@@ -84,11 +84,11 @@ cd "$work" || fail "no work folder"
 local_rc=$?
 case $local_rc in 0 | 1 | 4) ;; *) cat local.err >&2; fail "the local study failed (exit $local_rc)" ;; esac
 
-# First call: the four runs go to Slurm, exit 5.
+# First call: the eight runs (fine and S_f 1.4, two seeds each, and their dry control) go to Slurm, exit 5.
 "$demscale" "${study[@]}" --cache slurm --out slurm_out --backend slurm >slurm.csv 2>slurm.err
 rc=$?
 [ $rc -eq 5 ] || { cat slurm.err >&2; fail "first slurm call: exit $rc, expected 5 (runs pending)"; }
-grep -q 'submitted 4 run(s) as Slurm job array' slurm.err || { cat slurm.err >&2; fail "no submission line"; }
+grep -q 'submitted 8 run(s) as Slurm job array' slurm.err || { cat slurm.err >&2; fail "no submission line"; }
 grep -q 'run the same command again to collect' slurm.err || fail "no hint how to collect"
 [ ! -e slurm_out ] || fail "a pending call wrote outputs"
 job=$(sed -n 's/.*as Slurm job array \([0-9]*\).*/\1/p' slurm.err)
@@ -108,7 +108,7 @@ done
 "$demscale" "${study[@]}" --cache slurm --out slurm_out --backend slurm >slurm.csv 2>slurm.err
 rc=$?
 [ $rc -eq $local_rc ] || { cat slurm.err "$work"/slurm/slurm/logs/* >&2; fail "collecting call: exit $rc, the local study's $local_rc"; }
-grep -q '4 cached, 0 to run' slurm.err || fail "collecting call did not read the 4 runs from the cache"
+grep -q '8 cached, 0 to run' slurm.err || fail "collecting call did not read the 8 runs from the cache"
 diff <(physics local.csv) <(physics slurm.csv) || fail "the study's tables differ from the local ones"
 for f in local_out/*.csv; do
   diff <(physics "$f") <(physics "slurm_out/${f#local_out/}") || fail "$f differs"
@@ -121,8 +121,8 @@ for f in local/*.csv; do
     fail "cached result $key.json differs"
   n=$((n + 1))
 done
-[ $n -eq 4 ] || fail "expected 4 cached runs, found $n"
-echo "4 runs on Slurm equal the local ones, bit for bit (wall times aside)"
+[ $n -eq 8 ] || fail "expected 8 cached runs, found $n"
+echo "8 runs on Slurm equal the local ones, bit for bit (wall times aside)"
 
 # A run whose task ended without a result is submitted again; --wait then collects in one call.
 lost=$(basename "$(ls slurm/*.json | head -1)" .json)

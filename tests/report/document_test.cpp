@@ -103,6 +103,29 @@ TEST_CASE("Wide tables are transposed or split so that every cell appears once",
     CHECK(report::document_cell(io::Cell(2195.17)) == "2195");
 }
 
+TEST_CASE("Tables for people: headings in words with units, empty columns left out, CSV keeps the identifiers",
+          "[report][layout]") {
+    CHECK(report::heading_of("fill_mass_g") == "fill mass (g)");
+    CHECK(report::heading_of("slump_diff_pct_of_height") == "slump difference (% of fill height)");
+    CHECK(report::heading_of("gamma_n_per_m") == "gamma (N/m)");
+    CHECK(report::heading_of("sf") == "S_f");
+    CHECK(report::heading_of("fhat_mikami1998") == "F̂ mikami1998");
+    CHECK(report::heading_of("time_to_rest_s") == "time to rest (s)");
+    io::Table t;
+    t.title = "t";
+    t.columns = {"sf", "repose_deg", "fill_mass_g"};
+    t.rows = {{1.0, io::Cell(io::not_available), 12.5}, {1.4, std::string(), 12.4}};
+    t.notes = {"fill_mass_g: the fill's solid mass", "sf: scale factor"};
+    const auto p = report::for_people(t);
+    CHECK(p.columns == std::vector<std::string>{"S_f", "fill mass (g)"});  // the repose column holds nothing
+    REQUIRE(p.rows.size() == 2);
+    CHECK(std::get<double>(p.rows[1][1]) == 12.4);
+    CHECK(p.notes[0] == "fill mass (g): the fill's solid mass");
+    t.headings = {"S_f", "angle", "mass of the fill, g"};
+    CHECK(report::for_people(t).columns == std::vector<std::string>{"S_f", "mass of the fill, g"});
+    CHECK(io::render(t, io::Format::csv).find("sf,repose_deg,fill_mass_g") != std::string::npos);
+}
+
 TEST_CASE("Caveats are grouped by kind, listing whom each affects", "[report][layout]") {
     const auto lines = report::grouped_caveats({{"fine", "top opening 4.3 diameters wide (< 5)"},
                                                 {"S_f = 1.4, k = 1", "top opening 3.1 diameters wide (< 5)"},

@@ -76,6 +76,12 @@ TEST_CASE("Cut to mass: the lowest centres inside the cone, to the fill's mass w
     for (std::size_t i = 0; i < kept.size(); ++i) mass += kept.mass[i], highest = std::max(highest, kept.position[i].z());
     CHECK(std::abs(mass - target) <= 0.5 * m);
     CHECK(highest == Approx(r + 0.015 * r * static_cast<double>(want)));  // the 40 highest went
+    // A sphere whose top pokes above the cone's rim is still held by the wall below its centre: the
+    // helix raised so that the highest of the `want` lowest pokes R/2 above the rim keeps them all.
+    auto raised = p;
+    const double dz = s.height_m - 0.5 * r - (r + 0.015 * r * static_cast<double>(want));
+    for (std::size_t i = 2; i < raised.size(); ++i) raised.position[i].z() += dz;
+    CHECK(cut_to_mass(s, raised).size() == want);
     // Fewer spheres than the target: refused, naming the radius and the shortfall.
     dem::Particles few;
     few.add({0, 0, r}, r, s.material.density);

@@ -16,6 +16,7 @@
 #include "slump/fill.hpp"
 #include "slump/response_study.hpp"
 #include "slump/run_cache.hpp"
+#include "report/slump_study_tables.hpp"
 #include "slump/study.hpp"
 
 using namespace demscale;
@@ -33,6 +34,11 @@ SlumpResult triangle(double H, double w, double slump, double d95) {
     r.final.spread = d95;
     r.final.spread_max = d95;
     return r;
+}
+std::vector<const SlumpResult*> ptrs(const std::vector<SlumpResult>& v) {
+    std::vector<const SlumpResult*> p;
+    for (const auto& r : v) p.push_back(&r);
+    return p;
 }
 }  // namespace
 
@@ -107,6 +113,17 @@ TEST_CASE("Geometry limits: Table 1's S_f in the reference cone, by hand, and a 
     CHECK(study.runs[1].grain.sf == 1.4);
     CHECK(study.coarse_seeds.size() == 2);
     CHECK(study.overall() == stats::Verdict::inconclusive);  // nothing judged yet: neither PASS nor FAIL
+    // The dry control: the fine scene and each coarse one without liquid, every seed; the dry coarse
+    // scenes of k = 1 and 3 are one scene (k scales only gamma), so they run once.
+    REQUIRE(study.dry_fine.size() == 2);
+    REQUIRE(study.dry_coarse.size() == 2);
+    CHECK(!study.dry_fine[0].scene.wet);
+    CHECK(study.dry_fine[1].scene.seed == fine.seed + 1);
+    CHECK(study.dry_coarse[1][1].scene.radius_m == Approx(1.4 * fine.radius_m));
+    CHECK(scene_key(study.dry_coarse[0][0].scene) == scene_key(study.dry_coarse[1][0].scene));
+    CHECK(scene_key(study.dry_fine[0].scene) != scene_key(study.reference.scene));
+    plan.baseline = Baseline::none;
+    CHECK(!plan_study(plan).has_control());
 }
 
 TEST_CASE("Similarity groups of an exponent: hand-derived S_f powers", "[similarity][exponent]") {
@@ -253,6 +270,11 @@ TEST_CASE("Run cache: keyed by every scene parameter, round trip, unreadable ent
     CHECK(back->came_to_rest);
     std::ofstream(dir / "0123456789abcdef.json") << "{ truncated";
     CHECK_FALSE(cache.load("0123456789abcdef"));
+    // A fill the cone could not hold is remembered by its reason, not poured again.
+    CHECK_FALSE(cache.load_unusable("fedcba9876543210"));
+    cache.store_unusable("fedcba9876543210", "fill: the cone holds 37.4 g");
+    CHECK(cache.load_unusable("fedcba9876543210") == std::optional<std::string>("fill: the cone holds 37.4 g"));
+    CHECK_FALSE(cache.load("fedcba9876543210"));
 }
 
 TEST_CASE("Replacement conserves mass and liquid: coarse fills of the cone against the fine one", "[slump][coarse][fill]") {
@@ -296,11 +318,6 @@ TEST_CASE("Ensemble verdict on constructed runs: PASS, FAIL, INCONCLUSIVE where 
         }
         return v;
     };
-    auto ptrs = [](const std::vector<SlumpResult>& v) {
-        std::vector<const SlumpResult*> p;
-        for (const auto& r : v) p.push_back(&r);
-        return p;
-    };
     Tolerances tol;
     tol.slump = 0.05, tol.spread = 0.05, tol.profile = 0.15;
     const auto fine = ensemble(0.020, 0.001, 0.10);
@@ -340,6 +357,78 @@ TEST_CASE("Ensemble verdict on constructed runs: PASS, FAIL, INCONCLUSIVE where 
         CHECK(dry.warnings[0].find("below the fine ensemble's own spread") != std::string::npos);
         CHECK(dry.warnings[1].find("no effect") != std::string::npos);
     }
+}
+
+TEST_CASE("Ensemble verdict against a dry control: the geometry's offset fails raw and is removed seed by seed",
+          "[slump][verdict][baseline]") {
+    // Piles given by their heights on bins of 2 mm; each seed's slump is m + s z_i. The coarse piles
+    // stand 1 mm higher near the axis and slump 0.006 m more, spread 6 % further, wet and dry alike:
+    // the offset a coarse S_f shows without liquid. Raw it fails; corrected it passes.
+    const std::vector<double> z = {-1.5, -1.0, -0.5, 0.0, 0.0, 0.5, 1.0, 1.5};
+    auto pile = [](double top, double slope, double bump, double slump, double spread) {
+        SlumpResult r;
+        for (double c = 0.001; c < 0.06; c += 0.002)
+            r.final.profile.push_back({c, std::max(0.0, top - slope * c) + (c < 0.01 ? bump : 0.0)});
+        r.initial_height = 0.05, r.final.height = 0.05 - slump, r.final.spread = spread, r.final.spread_max = spread;
+        r.final.foot = 0.0005;
+        return r;
+    };
+    auto ensemble = [&](double top, double slope, double bump, double slump, double spread) {
+        std::vector<SlumpResult> v;
+        for (double x : z) v.push_back(pile(top, slope, bump, slump + 0.0005 * x, spread * (1 + 0.002 * x)));
+        return v;
+    };
+    Tolerances tol;
+    tol.slump = 0.05, tol.spread = 0.05, tol.profile = 0.02;
+    const auto fine = ensemble(0.03, 1.0, 0, 0.020, 0.10), coarse = ensemble(0.03, 1.0, 0.001, 0.026, 0.106);
+    const auto dry_fine = ensemble(0.02, 0.5, 0, 0.030, 0.12), dry_coarse = ensemble(0.02, 0.5, 0.001, 0.036, 0.126);
+    const auto raw = judge_ensemble(ptrs(fine), ptrs(coarse), 1.4, 1, tol, 1e-3, true);
+    CHECK(raw.criteria[0].estimate == Approx(0.12));  // 6 mm of 50
+    CHECK(raw.criteria[0].verdict == stats::Verdict::fail);
+    CHECK(raw.criteria[1].estimate == Approx(0.06));
+    CHECK(raw.criteria[1].verdict == stats::Verdict::fail);
+    CHECK(raw.criteria[2].estimate > 0.03);  // the 1 mm bump over the first five bins
+    CHECK(raw.criteria[2].verdict == stats::Verdict::fail);
+    const DryControl control{ptrs(dry_fine), ptrs(dry_coarse)};
+    const auto corrected = judge_ensemble(ptrs(fine), ptrs(coarse), 1.4, 1, tol, 1e-3, true, &control);
+    CHECK(corrected.criteria[0].estimate == Approx(0.0).margin(1e-12));
+    CHECK(corrected.criteria[1].estimate == Approx(0.0).margin(1e-12));
+    CHECK(corrected.criteria[2].estimate == Approx(0.0).margin(1e-12));
+    CHECK(corrected.overall == stats::Verdict::pass);
+    // A control whose offset differs from the wet one leaves the difference: dry coarse = dry fine.
+    const DryControl none{ptrs(dry_fine), ptrs(dry_fine)};
+    const auto unchanged = judge_ensemble(ptrs(fine), ptrs(coarse), 1.4, 1, tol, 1e-3, true, &none);
+    CHECK(unchanged.criteria[0].estimate == Approx(0.12));
+    CHECK(unchanged.criteria[2].estimate == Approx(raw.criteria[2].estimate).epsilon(1e-9));
+    // The control holds the same seeds or none at all.
+    const DryControl short_control{ptrs(dry_fine), {&dry_coarse[0]}};
+    CHECK_THROWS_AS(judge_ensemble(ptrs(fine), ptrs(coarse), 1.4, 1, tol, 1e-3, true, &short_control), std::invalid_argument);
+}
+
+TEST_CASE("A study whose coarse fill the cone could not hold: that ensemble is UNUSABLE, the others are judged",
+          "[slump][verdict][baseline]") {
+    StudyPlan plan;
+    plan.fine = kantro(), plan.scale_factors = {1.4, 1.96}, plan.exponents = {1}, plan.seeds = 3;
+    auto study = plan_study(plan);
+    // Every run the same constructed pile (so every comparison is exact), then one coarse fill at
+    // S_f 1.96 marked as a pour that jammed.
+    const auto same = triangle(0.03, 0.002, 0.02, 0.1);
+    for (auto* r : study.all_runs()) r->result = same, r->key = scene_key(r->scene);
+    study.coarse_seeds.back().unusable = "fill: the cone holds 37.4 g, short of the fill's 40.49 g";
+    judge_study(study, plan);
+    REQUIRE(study.corrected.size() == 2);
+    CHECK(study.corrected[0].unusable.empty());
+    CHECK(study.corrected[0].overall == stats::Verdict::pass);
+    CHECK_THAT(study.corrected[1].unusable, Catch::Matchers::Contains("1 of 6 fills unusable (seed 3: fill: the cone holds 37.4 g"));
+    CHECK(study.corrected[1].criteria.empty());
+    CHECK(study.overall() == stats::Verdict::pass);  // the unusable ensemble is no part of it
+    CHECK(study.judged_scale_factors() == std::vector<double>{1.4});
+    const auto table = io::render(report::verdict_table(study, "kantro"), io::Format::csv);
+    CHECK_THAT(table, Catch::Matchers::Contains("UNUSABLE FILL"));
+    CHECK_THAT(io::render(report::study_table(study, "kantro"), io::Format::csv), Catch::Matchers::Contains("UNUSABLE: fill"));
+    // A fine fill the cone cannot hold is the scene's problem: refused.
+    study.replicas.front().unusable = "fill: short";
+    CHECK_THROWS_WITH(judge_study(study, plan), Catch::Matchers::Contains("the fine scene's fill, seed 2"));
 }
 
 TEST_CASE("Response curves: levels a factor apart exactly, coarse gamma-bar = f gamma S_f^offset, f = 1 is the study's own run",

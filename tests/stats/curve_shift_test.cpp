@@ -66,6 +66,31 @@ TEST_CASE("Curve shift: noiseless curves give back the exponent they were made w
     }
 }
 
+TEST_CASE("Curve shift: a control offset is subtracted, not read as a shift in k", "[stats][exponent]") {
+    std::mt19937_64 rng(2);
+    // The coarse piles slump 0.05 of the height more at every cohesion, as their dry control does:
+    // raw, that offset pulls k-hat off; with the controls it is subtracted and k = 1 comes back.
+    const double k_true = 1, offset = 0.05;
+    const ResponseCurve fine = synthetic(1, 0, 0.025, 6, 4, 0.0, rng);
+    ResponseCurve coarse = synthetic(1.4, k_true, 0.025 * 1.96, 6, 4, 0.0, rng);
+    for (auto& l : coarse.levels)
+        for (auto& y : l.y) y += offset;
+    const auto raw = estimate_exponent(fine, {coarse}, {-2, 6, 50, 1});
+    CHECK(std::abs(raw[0].k - k_true) > 0.3);
+    CHECK(raw[0].offset == 0.0);
+    ResponseCurve fine_c = fine, coarse_c = coarse;
+    fine_c.control = {0.78, 0.80, 0.82};
+    coarse_c.control = {0.83, 0.85, 0.87};
+    CHECK(control_offset(fine_c, coarse_c) == Approx(offset));
+    CHECK(control_offset(fine, coarse_c) == 0.0);  // a control on one side only is no control
+    const auto corrected = estimate_exponent(fine_c, {coarse_c}, {-2, 6, 200, 1});
+    CHECK(corrected[0].k == Approx(k_true).margin(0.12));
+    CHECK(corrected[0].offset == Approx(offset));
+    CHECK(corrected[0].ci.contains(k_true));
+    CHECK(shift_residual_rms(fine_c, {coarse_c}, k_true) < 0.01);
+    CHECK(shift_residual_rms(fine, {coarse}, k_true) == Approx(offset).epsilon(0.05));
+}
+
 TEST_CASE("Curve shift: the 95 % interval covers the true exponent in about 95 % of trials", "[stats][exponent]") {
     std::mt19937_64 rng(7);
     const double k_true = 1.0;
