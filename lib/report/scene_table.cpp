@@ -17,7 +17,7 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
     add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
     add("particle density", s.material.density, "kg/m^3");
     add("fill height", s.fill_height_m * 1e3, "mm");
-    say("fill", s.fill == slump::FillKind::poured ? "poured in batches, struck off level" : "hcp lattice");
+    say("fill", s.fill == slump::FillKind::poured ? "poured in batches, cut to the scene's mass" : "hcp lattice, cut to the scene's mass");
     say("rolling resistance", !s.rolling_resistance                                  ? "none"
                               : s.rolling_model == slump::RollingModel::epsd2        ? "epsd2 (k_r = k_t R*^2)"
                               : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"
