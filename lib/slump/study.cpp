@@ -169,6 +169,18 @@ void judge_study(Study& study, const StudyPlan& plan) {
         study.corrected.push_back(judge_ensemble(study.fine_ensemble(), study.coarse_ensemble(i), sf, k, study.tolerances,
                                                  plan.fine.radius_m, true, &control));
         study.controls.push_back(judge_ensemble(control.fine, control.coarse, sf, k, study.tolerances, plan.fine.radius_m, true));
+        // The correction is first-order: say so where the control itself is far off or still moving.
+        auto& corrected = study.corrected.back();
+        if (study.controls.back().overall == stats::Verdict::fail)
+            corrected.warnings.push_back("the dry control itself FAILs here (coarse and fine differ beyond the tolerances without liquid): "
+                                         "the geometry dominates and removing it as an offset is a first-order correction");
+        std::size_t moving = 0;
+        for (const auto& side : {control.fine, control.coarse})
+            for (const auto* r : side) moving += !r->came_to_rest;
+        if (moving > 0)
+            corrected.warnings.push_back(std::to_string(moving) + " of the dry control's " +
+                                         std::to_string(control.fine.size() + control.coarse.size()) +
+                                         " piles were still moving at the time limit (run.spread_time_s)");
     }
 }
 

@@ -419,6 +419,8 @@ TEST_CASE("A study whose coarse fill the cone could not hold: that ensemble is U
     REQUIRE(study.corrected.size() == 2);
     CHECK(study.corrected[0].unusable.empty());
     CHECK(study.corrected[0].overall == stats::Verdict::pass);
+    REQUIRE(!study.corrected[0].warnings.empty());  // the constructed piles never came to rest: said, not hidden
+    CHECK_THAT(study.corrected[0].warnings.back(), Catch::Matchers::Contains("6 of the dry control's 6 piles were still moving"));
     CHECK_THAT(study.corrected[1].unusable, Catch::Matchers::Contains("1 of 6 fills unusable (seed 3: fill: the cone holds 37.4 g"));
     CHECK(study.corrected[1].criteria.empty());
     CHECK(study.overall() == stats::Verdict::pass);  // the unusable ensemble is no part of it
