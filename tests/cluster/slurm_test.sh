@@ -70,9 +70,11 @@ done
   skip "the node did not come up: $(tail -3 "$work/slurmctld.log" "$work/slurmd.log" 2>/dev/null | tr '\n' ' ')"
 echo "single-node Slurm up: node $node, $cores CPUs, port $port"
 
-# The wall-clock columns (wall_s, speedup_wall) dropped from every CSV table; the rest kept as is.
+# The wall-clock columns (wall_s, speedup_wall) dropped from every CSV table, and the cost line
+# (cached runs and wall time differ by design); the rest kept as is.
 physics() {
   awk -F, -v OFS=, '
+    /^cost: / { next }
     /^#/ || NF == 0 { drop = ""; print; next }
     /(^|,)wall_s(,|$)/ { drop = ","; for (i = 1; i <= NF; i++) if ($i == "wall_s" || $i == "speedup_wall") drop = drop i "," }
     { line = ""; for (i = 1; i <= NF; i++) if (index(drop, "," i ",") == 0) line = line (line == "" ? "" : OFS) $i; print line }' "$1"
