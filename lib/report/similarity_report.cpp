@@ -296,12 +296,9 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         std::vector<const slump::StudyRun*> fine = {&study.reference};
         for (const auto& r : study.replicas) fine.push_back(&r);
         ensemble_caveats("fine", fine);
-        const std::size_t others = study.runs.empty() ? 0 : study.coarse_seeds.size() / study.runs.size();
-        for (std::size_t i = 0; i < study.runs.size(); ++i) {
-            std::vector<const slump::StudyRun*> runs = {&study.runs[i]};
-            for (std::size_t j = 0; j < others; ++j) runs.push_back(&study.coarse_seeds[i * others + j]);
-            ensemble_caveats("S_f = " + format_short(study.runs[i].grain.sf) + ", k = " + format_short(study.runs[i].grain.exponent), runs);
-        }
+        for (std::size_t i = 0; i < study.runs.size(); ++i)
+            ensemble_caveats("S_f = " + format_short(study.runs[i].grain.sf) + ", k = " + format_short(study.runs[i].grain.exponent),
+                             study.coarse_runs(i));
     });
 
     Section estimate_section{"Measured exponent", {}};

@@ -190,11 +190,8 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
     };
     add(study.reference, io::Cell(io::not_available));
     for (const auto& r : study.replicas) add(r, io::Cell(io::not_available));
-    const std::size_t others = study.runs.empty() ? 0 : study.coarse_seeds.size() / study.runs.size();
-    for (std::size_t i = 0; i < study.runs.size(); ++i) {
-        add(study.runs[i], study.runs[i].grain.exponent);
-        for (std::size_t j = 0; j < others; ++j) add(study.coarse_seeds[i * others + j], study.runs[i].grain.exponent);
-    }
+    for (std::size_t i = 0; i < study.runs.size(); ++i)
+        for (const auto* r : study.coarse_runs(i)) add(*r, study.runs[i].grain.exponent);
     // The dry control's runs, each distinct scene once; remarks say what they are.
     std::set<std::string> seen;
     auto add_dry = [&](const slump::StudyRun& r) {

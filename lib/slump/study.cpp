@@ -29,10 +29,16 @@ std::vector<const SlumpResult*> Study::fine_ensemble() const {
     return f;
 }
 
+std::vector<const StudyRun*> Study::coarse_runs(std::size_t i) const {
+    std::vector<const StudyRun*> c = {&runs.at(i)};
+    const std::size_t others = coarse_seeds.size() / runs.size();
+    for (std::size_t j = 0; j < others; ++j) c.push_back(&coarse_seeds.at(i * others + j));
+    return c;
+}
+
 std::vector<const SlumpResult*> Study::coarse_ensemble(std::size_t i) const {
-    std::vector<const SlumpResult*> c = {&runs.at(i).result};
-    const std::size_t others = runs.empty() ? 0 : coarse_seeds.size() / runs.size();
-    for (std::size_t j = 0; j < others; ++j) c.push_back(&coarse_seeds.at(i * others + j).result);
+    std::vector<const SlumpResult*> c;
+    for (const auto* r : coarse_runs(i)) c.push_back(&r->result);
     return c;
 }
 
@@ -44,9 +50,7 @@ std::vector<const StudyRun*> Study::fine_runs() const {
 }
 
 std::string Study::unusable(std::size_t i) const {
-    std::vector<const StudyRun*> ensemble = {&runs.at(i)};
-    const std::size_t others = coarse_seeds.size() / runs.size();
-    for (std::size_t j = 0; j < others; ++j) ensemble.push_back(&coarse_seeds.at(i * others + j));
+    auto ensemble = coarse_runs(i);
     if (has_control())
         for (const auto& r : dry_coarse.at(i)) ensemble.push_back(&r);
     std::size_t n = 0;

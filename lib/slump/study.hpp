@@ -65,7 +65,8 @@ struct Study {
     stats::Verdict overall() const;
     std::vector<double> judged_scale_factors() const;  // the S_f with verdicts, in the plan's order
     std::vector<const SlumpResult*> fine_ensemble() const;
-    std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // runs[run] and its other seeds
+    std::vector<const StudyRun*> coarse_runs(std::size_t run) const;         // runs[run] and its other seeds
+    std::vector<const SlumpResult*> coarse_ensemble(std::size_t run) const;  // their results
     std::vector<const StudyRun*> fine_runs() const;  // the fine ensemble's runs and its dry control's
     // Why ensemble `run` (its coarse runs and their dry control) cannot be judged: how many of its
     // fills the cone could not hold, and the first one's reason; empty when every fill is a column.
