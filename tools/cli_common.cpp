@@ -42,7 +42,14 @@ void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& w
     c->add_option("--baseline", o.baseline,
                   "dry: also run the scene without liquid (same seeds) and judge after removing its coarse - fine offset; none: raw only")
         ->capture_default_str();
+    c->add_option("--seed-base", o.seed_base, "first seed of every ensemble (default: the scene's `seed`); another base draws new piles");
     add_backend_options(c, o.slurm);
+}
+
+void apply_seed_base(slump::SlumpScene& scene, long seed_base) {
+    if (seed_base == 0) return;
+    if (seed_base < 1 || seed_base > 2147483647L) throw InputError("--seed-base", std::to_string(seed_base), "1 to 2147483647");
+    scene.seed = static_cast<unsigned>(seed_base);
 }
 
 slump::Baseline parse_baseline(const std::string& text) {

@@ -100,6 +100,7 @@ struct StudyRunOptions {
     std::string out_dir = default_plots;
     std::string format = "text";
     std::string baseline = "dry";
+    long seed_base = 0;  // 0: the scene's seed
     SlurmOptions slurm;
 };
 void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out);
@@ -111,6 +112,8 @@ struct BatchSettings {
     std::optional<slump::SlurmSettings> slurm;
 };
 BatchSettings batch_settings(const StudyRunOptions& o);
+// --seed-base: the scene's first seed replaced (validated: 1 to 2^31 − 1), or left as it is for 0.
+void apply_seed_base(slump::SlumpScene& scene, long seed_base);
 // --baseline: "dry" (the dry control of the same seeds, which decides) or "none" (raw decides).
 slump::Baseline parse_baseline(const std::string& text);
 

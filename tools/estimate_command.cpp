@@ -25,6 +25,7 @@ struct Options {
 slump::ResponsePlan plan_from(const Options& o) {
     slump::ResponsePlan plan;
     plan.fine = load_scene(o.scene);
+    apply_seed_base(plan.fine, o.run.seed_base);
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
     plan.factors = parse_factor_range(o.range, o.levels, "--range", "--levels");
     plan.offset_exponent = o.offset;
@@ -39,23 +40,42 @@ slump::ResponsePlan plan_from(const Options& o) {
     return plan;
 }
 
-// "k = 1.3 [0.9, 1.8]: inside it stress (k = 1); outside Bond (k = 2), Table 1 (k = 3)"
-std::string summary(const stats::ExponentEstimate& e) {
-    std::string s = (e.sf == 0 ? "all S_f" : "S_f = " + format_short(e.sf, 3)) + ": k-hat = " + format_short(e.k, 3) + " [" +
-                    format_short(e.ci.low, 3) + ", " + format_short(e.ci.high, 3) + "]";
-    if (!e.determined)
-        return s + " UNDETERMINED (no unique shift maps this coarse curve onto the fine one inside k = -2 to 6: see the figure; move "
-                   "--range or --offset, or the coarse pile differs for other reasons, e.g. geometry)";
+std::string sf_name(double sf) { return sf == 0 ? "all S_f" : "S_f = " + format_short(sf, 3); }
+
+std::string interval_text(const stats::Interval& i) { return "[" + format_short(i.low, 3) + ", " + format_short(i.high, 3) + "]"; }
+
+// Which of the similarity groups' exponents an interval holds.
+std::string groups_inside(const stats::Interval& ci) {
     std::string in, out;
     for (double k : {1.0, 2.0, 3.0}) {
-        std::string& list = e.ci.contains(k) ? in : out;
+        std::string& list = ci.contains(k) ? in : out;
         list += (list.empty() ? "" : ", ") + format_short(k);
     }
-    s += "; inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
-    if (e.split_levels > 0)
-        s += "; WARNING: rests on " + std::to_string(e.split_levels) + (e.split_levels == 1 ? " level" : " levels") +
-             " whose seeds split between the ends of the response (seeds_split): the interval understates the uncertainty; "
-             "add seeds there";
+    return "inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
+}
+
+// "S_f = 1.4: k-hat = 0.93 [0.81, 1.07] (3 standing, 45 slumped runs); inside ...; passes ±5 % for k 0.6 to 1.3"
+std::string model_summary(const stats::TransitionFit& f, const stats::PassingRange* pass, double tolerance) {
+    std::string s = sf_name(f.sf) + ": k-hat = " + format_short(f.k, 3) + " " + interval_text(f.ci) + " (" + std::to_string(f.standing) +
+                    " standing, " + std::to_string(f.slumped) + " slumped runs)";
+    if (!f.determined)
+        return s + " UNDETERMINED (the likelihood does not close inside k = -2 to 6: the coarse levels do not overlap the fine "
+                   "curve where it changes; move --range or --offset)";
+    s += "; " + groups_inside(f.ci);
+    if (pass) {
+        auto end = [](double k, bool open, const char* sign) { return std::string(open ? sign : "") + format_short(k, 3); };
+        s += "; slump within ±" + format_short(100 * tolerance, 3) + " % of the fill height for k " +
+             (pass->empty() ? std::string("- none for every k in the interval (it is wider than the band)")
+                            : end(pass->over_interval.low, pass->low_open, "<=") + " to " + end(pass->over_interval.high, pass->high_open, ">=")) +
+             " (at k-hat exactly: " + end(pass->at_k_hat.low, pass->low_open, "<=") + " to " + end(pass->at_k_hat.high, pass->high_open, ">=") + ")";
+    }
+    return s;
+}
+
+std::string shift_summary(const stats::ExponentEstimate& e) {
+    std::string s = sf_name(e.sf) + ": k-hat = " + format_short(e.k, 3) + " " + interval_text(e.ci);
+    if (!e.determined) return s + " undetermined";
+    if (e.split_levels > 0) s += " (rests on " + std::to_string(e.split_levels) + " split " + (e.split_levels == 1 ? "level" : "levels") + ")";
     return s;
 }
 
@@ -75,17 +95,21 @@ int run_estimate(const Options& o) {
         for (const auto& e : study.fine) runs += e.runs.size();
         std::cout << "\n" << runs << " fine runs (" << study.fine.size() << (study.fine.size() == 1 ? " level x " : " levels x ") << plan.seeds << " seeds); " << format_short(study.wall_s, 3)
                   << " s\n";
-        if (study.has_control())
-            std::cout << "baseline-corrected (decides): each coarse curve less its dry control's offset, same seeds\n";
-        for (const auto& e : study.estimates) std::cout << summary(e) << "\n";
-        if (study.has_control()) {
-            std::cout << "raw, for comparison (the dry offset read as a shift in k):\n";
-            for (const auto& e : study.raw_estimates) std::cout << "  raw " << summary(e) << "\n";
+        if (study.wet) {
+            std::cout << "transition model (decides; docs/exponent-estimate.md)" << (study.has_control() ? ", baseline-corrected (the dry control's offset, same seeds)" : "") << ":\n";
+            for (std::size_t i = 0; i < study.fits.size(); ++i)
+                std::cout << "  " << model_summary(study.fits[i], &study.passing[i], plan.fine.tolerances.slump) << "\n";
+            if (study.has_control()) {
+                std::cout << "  raw, for comparison (the dry offset read as a shift in k):\n";
+                for (const auto& f : study.raw_fits) std::cout << "    " << model_summary(f, nullptr, 0) << "\n";
+            }
+            std::cout << "means shift with its seed bootstrap (for comparison; it undercovers where levels split):\n";
+            for (const auto& e : study.estimates) std::cout << "  " << shift_summary(e) << "\n";
         }
         if (!study.wet) std::cout << "dry scene: no liquid to vary; the table is the dry control (coarse against fine)\n";
     }
     for (const auto& f : files.written) std::cerr << "wrote " << f.string() << "\n";
-    return study.wet && !study.estimates.back().determined ? 4 : 0;
+    return study.wet && !study.fits.back().determined ? 4 : 0;
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ struct Options {
 slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) {
     slump::StudyPlan plan;
     plan.fine = load_scene(o.scene);
+    apply_seed_base(plan.fine, o.run.seed_base);
     plan.exponents = parse_exponents(o.exponents, exponent_field);
     plan.scale_factors = scale_factors_or_usable(o.sfs, plan.fine);
     plan.scaled = o.scaled;

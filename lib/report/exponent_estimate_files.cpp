@@ -92,8 +92,8 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
             auto cs = curves_of(study, e);
             auto fine = study.fine_curve;
             if (!with_control) {
-                fine.control.clear();
-                for (auto& c : cs) c.control.clear();
+                fine.control = {};
+                for (auto& c : cs) c.control = {};
             }
             std::string inside;
             for (const auto& g : groups)

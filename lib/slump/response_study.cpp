@@ -58,7 +58,7 @@ stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& level
         if (!e.unusable().empty()) continue;  // a level whose fills the cone could not hold is no point of the curve
         stats::ResponseLevel l;
         l.x = std::log(e.gamma);
-        for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result));
+        for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result)), l.seed.push_back(r.scene.seed);
         c.levels.push_back(l);
     }
     return c;
@@ -183,16 +183,22 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
         }
         if (study.has_control()) {
             study.raw_estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+            study.raw_fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
             auto control = [](const ResponseEnsemble& e) {
-                std::vector<double> y;
-                for (const auto& r : e.runs) y.push_back(slump_over_height(r.result));
-                return y;
+                stats::ResponseLevel l;
+                for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result)), l.seed.push_back(r.scene.seed);
+                return l;
             };
             study.fine_curve.control = control(study.dry_control.front());
             for (std::size_t s = 0; s < study.coarse_curves.size(); ++s) study.coarse_curves[s].control = control(study.dry_control[s + 1]);
         }
         study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+        study.fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
         study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
+        study.fine_range = {INFINITY, -INFINITY};
+        for (const auto& l : study.fine_curve.levels) study.fine_range = {std::min(study.fine_range.low, l.x), std::max(study.fine_range.high, l.x)};
+        study.passing = stats::passing_ranges(study.fits, plan.scale_factors, std::log(plan.fine.liquid.surface_tension_n_per_m),
+                                              plan.fine.tolerances.slump, study.fine_range);
     } else {
         for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
             study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front(), plan.fine));

@@ -16,6 +16,8 @@
 #include "slump/ensemble_verdict.hpp"
 #include "slump/run_batch.hpp"
 #include "stats/curve_shift.hpp"
+#include "stats/passing_range.hpp"
+#include "stats/transition_model.hpp"
 #include "stats/summary.hpp"
 
 namespace demscale::slump {
@@ -28,7 +30,8 @@ struct ResponsePlan {
     int seeds = 8;
     Baseline baseline = Baseline::dry;  // wet scenes: the dry control beside the levels
     BatchOptions batch;
-    stats::ShiftSearch search;
+    stats::ShiftSearch search;           // the means shift (comparison)
+    stats::TransitionSettings transition;  // the transition model (decides)
 };
 
 struct ResponseEnsemble {
@@ -57,8 +60,13 @@ struct ResponseStudy {
     std::vector<StudyRun*> all_runs();                  // fine, then coarse
     stats::ResponseCurve fine_curve;                    // slump over height against ln γ
     std::vector<stats::ResponseCurve> coarse_curves;
-    std::vector<stats::ExponentEstimate> estimates;     // per S_f then jointly (wet only); baseline-corrected with a dry control
-    std::vector<stats::ExponentEstimate> raw_estimates; // the same without the dry control's offset (with a dry control only)
+    // k per S_f then jointly (wet only), baseline-corrected with a dry control, then raw (with a dry
+    // control only): the transition model decides, the means shift is shown beside it.
+    std::vector<stats::TransitionFit> fits, raw_fits;
+    std::vector<stats::ExponentEstimate> estimates;     // the means shift
+    std::vector<stats::ExponentEstimate> raw_estimates;
+    std::vector<stats::PassingRange> passing;           // the k that pass at the scene's slump tolerance, per S_f then jointly (from fits)
+    stats::Interval fine_range;                         // the fine levels' ln γ, lowest and highest
     bool has_control() const { return !dry_control.empty(); }
     std::vector<stats::SplitLevel> split;               // levels whose seeds split (wet only; stats::split_levels)
     std::vector<DryBaseline> baselines;                 // dry only

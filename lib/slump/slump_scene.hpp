@@ -15,7 +15,7 @@ namespace demscale::slump {
 
 // How far a coarse run may differ from the fine reference (check-exponent's verdict), relative.
 struct Tolerances {
-    double slump = 0.10;    // |s̄ − s| / s
+    double slump = 0.10;    // of the fill height: |s̄/H̄₀ − s/H₀|
     double spread = 0.10;   // |d̄95 − d95| / d95
     double profile = 0.15;  // ‖h̄ − h‖₂ / ‖h‖₂ over the radius
 };

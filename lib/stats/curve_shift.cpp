@@ -92,20 +92,6 @@ Shift best_shift(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, co
     return {objective(fine, coarse, refined) <= least ? refined : std::min(s.k_min + best * step, s.k_max), unique};
 }
 
-ResponseCurve resampled(const ResponseCurve& c, std::mt19937_64& rng) {
-    ResponseCurve r = c;
-    for (std::size_t i = 0; i < c.levels.size(); ++i) {
-        const auto& seeds = c.levels[i].y;
-        std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
-        for (auto& y : r.levels[i].y) y = seeds[pick(rng)];
-    }
-    if (!c.control.empty()) {
-        std::uniform_int_distribution<std::size_t> pick(0, c.control.size() - 1);
-        for (auto& y : r.control) y = c.control[pick(rng)];
-    }
-    return r;
-}
-
 void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
     if (fine.levels.size() < 2) throw std::invalid_argument("the fine response curve needs at least two levels");
     auto check_levels = [](const ResponseCurve& c) {
@@ -124,8 +110,52 @@ void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) 
 double interpolate_response(const ResponseCurve& fine, double x) { return interpolate(means_of(fine), x); }
 
 double control_offset(const ResponseCurve& fine, const ResponseCurve& coarse) {
-    if (fine.control.empty() || coarse.control.empty()) return 0.0;
-    return mean_of(coarse.control) - mean_of(fine.control);
+    if (fine.control.y.empty() || coarse.control.y.empty()) return 0.0;
+    return mean_of(coarse.control.y) - mean_of(fine.control.y);
+}
+
+namespace {
+long seed_at(const ResponseLevel& l, std::size_t i) { return l.seed.empty() ? static_cast<long>(i) : l.seed[i]; }
+
+// The level's values of the drawn seeds, in the draw's order (a seed drawn twice twice).
+std::vector<double> values_of(const ResponseLevel& l, const std::vector<long>& drawn) {
+    std::vector<double> y;
+    for (long s : drawn)
+        for (std::size_t i = 0; i < l.y.size(); ++i)
+            if (seed_at(l, i) == s) y.push_back(l.y[i]);
+    return y;
+}
+}  // namespace
+
+ResponseCurve resample_by_seed(const ResponseCurve& c, std::mt19937_64& rng) {
+    std::vector<long> seeds;
+    auto collect = [&](const ResponseLevel& l) {
+        for (std::size_t i = 0; i < l.y.size(); ++i) seeds.push_back(seed_at(l, i));
+    };
+    for (const auto& l : c.levels) collect(l);
+    collect(c.control);
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    ResponseCurve r = c;
+    if (seeds.empty()) return r;
+    std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        std::vector<long> drawn(seeds.size());
+        for (auto& s : drawn) s = seeds[pick(rng)];
+        bool every_level = true;
+        for (std::size_t i = 0; i < c.levels.size(); ++i) {
+            r.levels[i].y = values_of(c.levels[i], drawn);
+            every_level = every_level && !r.levels[i].y.empty();
+        }
+        if (!c.control.y.empty()) r.control.y = values_of(c.control, drawn);
+        every_level = every_level && (c.control.y.empty() || !r.control.y.empty());
+        if (every_level) {
+            for (auto& l : r.levels) l.seed.clear();  // resampled values carry no seed identity any more
+            r.control.seed.clear();
+            return r;
+        }
+    }
+    return c;
 }
 
 std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
@@ -182,9 +212,9 @@ std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const
     std::vector<std::vector<double>> boot(sets.size());
     std::mt19937_64 rng(search.seed);
     for (int b = 0; b < search.resamples; ++b) {
-        const ResponseCurve f = resampled(fine, rng);
+        const ResponseCurve f = resample_by_seed(fine, rng);
         std::vector<ResponseCurve> cs;
-        for (const auto& c : coarse) cs.push_back(resampled(c, rng));
+        for (const auto& c : coarse) cs.push_back(resample_by_seed(c, rng));
         const std::vector<Shift> k = estimate_all(f, cs);
         for (std::size_t s = 0; s < sets.size(); ++s) boot[s].push_back(k[s].k);
     }

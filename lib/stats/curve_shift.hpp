@@ -10,8 +10,9 @@
 // and one that has fully slumped); k̂ minimises Σ_j (ȳ_j − y_fine(x_j − k ln S_f))² over the coarse
 // levels j, per S_f, and jointly over all S_f (one k, every coarse level). The search runs over
 // [k_min, k_max] on a grid of 0.05 refined by golden section. 95 % interval: percentile bootstrap
-// over seeds (every ensemble, fine and coarse, resampled with replacement, k̂ recomputed), with a
-// fixed generator seed so that an estimate repeats. k is undetermined when the objective is flat
+// over seeds (each curve's seeds resampled with replacement, a seed's runs at every level and in
+// the control together; fine and coarse curves independently; k̂ recomputed), with a fixed
+// generator seed so that an estimate repeats. k is undetermined when the objective is flat
 // at its minimum (the coarse levels lie on the plateaus: many shifts fit equally) or the interval
 // reaches the search bounds.
 //
@@ -28,6 +29,7 @@
 #pragma once
 
 #include <cstddef>
+#include <random>
 #include <vector>
 
 #include "stats/summary.hpp"
@@ -35,15 +37,23 @@
 namespace demscale::stats {
 
 struct ResponseLevel {
-    double x = 0;            // ln of the cohesion variable (for γ in N/m: ln γ)
-    std::vector<double> y;   // the response, one value per seed
+    double x = 0;               // ln of the cohesion variable (for γ in N/m: ln γ)
+    std::vector<double> y;      // the response, one value per seed
+    std::vector<long> seed;     // the seed of each y (empty: y[i] is seed i)
 };
 
+// A curve's levels (and its control) share their seeds: a seed's runs at every level are one unit
+// of the bootstrap (resample_by_seed).
 struct ResponseCurve {
     double sf = 1;                     // scale factor of its particles (fine: 1)
     std::vector<ResponseLevel> levels; // in any order
-    std::vector<double> control;       // the response without cohesion, one value per seed (empty: none)
+    ResponseLevel control;             // the response without cohesion, one value per seed (no y: none); x unused
 };
+
+// The curve with its seeds drawn with replacement, as many as it has: every level (and the control)
+// takes the drawn seeds' values, a seed drawn twice counted twice. A level that lacks every drawn
+// seed is drawn again (up to 100 tries; then it keeps its own values).
+ResponseCurve resample_by_seed(const ResponseCurve& c, std::mt19937_64& rng);
 
 // mean(coarse.control) − mean(fine.control), 0 unless both carry a control.
 double control_offset(const ResponseCurve& fine, const ResponseCurve& coarse);

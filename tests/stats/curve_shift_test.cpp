@@ -35,7 +35,7 @@ ResponseCurve synthetic(double sf, double k, double gamma0, int levels, int seed
 
 TEST_CASE("Curve shift: the interpolant passes through the means and is flat beyond them", "[stats][exponent]") {
     ResponseCurve f;
-    f.levels = {{0.0, {0.8, 0.6}}, {1.0, {0.5}}, {2.0, {0.1, 0.3}}};
+    f.levels = {{0.0, {0.8, 0.6}, {}}, {1.0, {0.5}, {}}, {2.0, {0.1, 0.3}, {}}};
     CHECK(interpolate_response(f, 0.0) == Approx(0.7));
     CHECK(interpolate_response(f, 1.0) == Approx(0.5));
     CHECK(interpolate_response(f, 2.0) == Approx(0.2));
@@ -79,8 +79,8 @@ TEST_CASE("Curve shift: a control offset is subtracted, not read as a shift in k
     CHECK(std::abs(raw[0].k - k_true) > 0.3);
     CHECK(raw[0].offset == 0.0);
     ResponseCurve fine_c = fine, coarse_c = coarse;
-    fine_c.control = {0.78, 0.80, 0.82};
-    coarse_c.control = {0.83, 0.85, 0.87};
+    fine_c.control.y = {0.78, 0.80, 0.82};
+    coarse_c.control.y = {0.83, 0.85, 0.87};
     CHECK(control_offset(fine_c, coarse_c) == Approx(offset));
     CHECK(control_offset(fine, coarse_c) == 0.0);  // a control on one side only is no control
     const auto corrected = estimate_exponent(fine_c, {coarse_c}, {-2, 6, 200, 1});
@@ -123,11 +123,11 @@ TEST_CASE("Curve shift: coarse levels on the plateaus do not determine the expon
 
 TEST_CASE("Curve shift: bad curves are refused", "[stats][exponent]") {
     ResponseCurve fine, coarse;
-    fine.levels = {{0.0, {0.5}}};
+    fine.levels = {{0.0, {0.5}, {}}};
     coarse.sf = 1.4;
-    coarse.levels = {{0.0, {0.5}}};
+    coarse.levels = {{0.0, {0.5}, {}}};
     CHECK_THROWS_AS(estimate_exponent(fine, {coarse}), std::invalid_argument);  // one fine level
-    fine.levels.push_back({1.0, {}});
+    fine.levels.push_back({1.0, {}, {}});
     CHECK_THROWS_AS(estimate_exponent(fine, {coarse}), std::invalid_argument);  // a level without runs
     fine.levels.back().y = {0.4};
     coarse.sf = 1.0;
@@ -137,11 +137,11 @@ TEST_CASE("Curve shift: bad curves are refused", "[stats][exponent]") {
 TEST_CASE("Curve shift: a level whose seeds stood and slumped is named, and the estimates resting on it say so", "[stats][exponent]") {
     // Level means span 0.01 (fine, high γ) to 0.70 (fine, low γ): thirds at 0.24 and 0.47 (by hand).
     ResponseCurve fine;
-    fine.levels = {{0.0, {0.69, 0.71}}, {1.0, {0.50, 0.56, 0.53}}, {2.0, {0.02, 0.60, 0.03, 0.01}}, {3.0, {0.01, 0.01}}};
+    fine.levels = {{0.0, {0.69, 0.71}, {}}, {1.0, {0.50, 0.56, 0.53}, {}}, {2.0, {0.02, 0.60, 0.03, 0.01}, {}}, {3.0, {0.01, 0.01}, {}}};
     ResponseCurve coarse14, coarse2;
     coarse14.sf = 1.4, coarse2.sf = 2;
-    coarse14.levels = {{0.5, {0.60, 0.62}}, {1.5, {0.30, 0.35}}, {2.5, {0.02, 0.02}}};  // 0.30-0.35: middle third, not split
-    coarse2.levels = {{1.0, {0.65, 0.66}}, {2.0, {0.20, 0.50, 0.22}}, {3.0, {0.01, 0.02}}};  // 0.20 and 0.22 low, 0.50 high
+    coarse14.levels = {{0.5, {0.60, 0.62}, {}}, {1.5, {0.30, 0.35}, {}}, {2.5, {0.02, 0.02}, {}}};  // 0.30-0.35: middle third, not split
+    coarse2.levels = {{1.0, {0.65, 0.66}, {}}, {2.0, {0.20, 0.50, 0.22}, {}}, {3.0, {0.01, 0.02}, {}}};  // 0.20 and 0.22 low, 0.50 high
     const auto split = split_levels(fine, {coarse14, coarse2});
     REQUIRE(split.size() == 2);
     CHECK(split[0].sf == 1);
@@ -168,6 +168,6 @@ TEST_CASE("Curve shift: a level whose seeds stood and slumped is named, and the 
     coarse2.levels[1].y = {0.30, 0.35, 0.32};
     CHECK(split_levels(steady, {coarse14, coarse2}).empty());
     ResponseCurve flat;
-    flat.levels = {{0.0, {0.1, 0.1}}, {1.0, {0.1, 0.1}}};
+    flat.levels = {{0.0, {0.1, 0.1}, {}}, {1.0, {0.1, 0.1}, {}}};
     CHECK(split_levels(flat, {}).empty());
 }
