@@ -19,6 +19,7 @@ struct Options {
     std::string range = "0.5,4";
     int levels = 4, seeds = 8, resamples = 1000;
     double offset = 2;
+    std::string runs;  // a runs file to judge instead of running
     StudyRunOptions run;
 };
 
@@ -83,7 +84,9 @@ int run_estimate(const Options& o) {
     auto plan = plan_from(o);
     const auto out = progress_output("estimate");
     plan.batch.live = out.live;
-    const auto study = slump::run_response_study(plan, out.log);
+    const auto study = o.runs.empty() ? slump::run_response_study(plan, out.log)
+                                      : slump::response_study_from_runs(slump::read_runs_file(o.runs, plan.fine.liquid.surface_tension_n_per_m),
+                                                                        plan, display_path(o.runs));
     const auto format = io::parse_format(o.run.format, "--format");
     const std::string label = display_path(o.scene);
     std::vector<io::Table> tables = {report::response_table(study, label)};
@@ -92,8 +95,9 @@ int run_estimate(const Options& o) {
     std::cout << join_tables(tables, format);
     if (format != io::Format::json) {
         std::size_t runs = 0;
-        for (const auto& e : study.fine) runs += e.runs.size();
-        std::cout << "\n" << runs << " fine runs (" << study.fine.size() << (study.fine.size() == 1 ? " level x " : " levels x ") << plan.seeds << " seeds); " << format_short(study.wall_s, 3)
+        for (const auto& e : study.fine) runs += e.measured.size();
+        if (!o.runs.empty()) std::cout << "\nruns read from " << display_path(o.runs) << " (none run)";
+        std::cout << "\n" << runs << " fine runs at " << study.fine.size() << (study.fine.size() == 1 ? " level" : " levels") << "; " << format_short(study.wall_s, 3)
                   << " s\n";
         if (study.wet) {
             std::cout << "transition model (decides; docs/exponent-estimate.md)" << (study.has_control() ? ", baseline-corrected (the dry control's offset, same seeds)" : "") << ":\n";
@@ -125,7 +129,10 @@ std::vector<Command> estimate_commands(CLI::App& app) {
     c->add_option("--offset", o->offset, "coarse levels at factor x gamma x S_f^offset")->capture_default_str();
     c->add_option("--seeds", o->seeds, "runs per level, 2 to 64")->capture_default_str();
     c->add_option("--resamples", o->resamples, "bootstrap resamples for the interval")->capture_default_str();
-    add_study_run_options(c, o->run, "the CSV files and the figure");
+    c->add_option("--runs", o->runs,
+                  "judge the runs in this CSV (docs/file-formats.md, runs file: e.g. another engine's, or runs.csv of an earlier study) "
+                  "instead of running; --scene gives the surface tension and the tolerance");
+    add_study_run_options(c, o->run, "the CSV files, runs.csv and the figure");
     return {{c, [o] { return run_estimate(*o); }}};
 }
 

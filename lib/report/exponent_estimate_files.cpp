@@ -48,22 +48,31 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     t.title = "Response of the slump test to surface tension, per scale factor (" + scene_label + ")";
     t.metadata = {{"scene", scene_label}};
     t.columns = {"sf", "gamma_n_per_m", "seeds", "slump_over_height", "slump_low", "slump_high", "spread_over_d0",
-                 "spread_low", "spread_high", "at_rest", "seeds_split"};
+                 "spread_low", "spread_high", "at_rest", "seeds_split", "standing", "slumped_mean"};
     auto add = [&](const slump::ResponseEnsemble& e) {
         if (const auto why = e.unusable(); !why.empty()) {  // not a point of the curve
             std::vector<io::Cell> row(t.columns.size(), io::Cell(io::not_available));
             row[0] = e.sf, row[1] = e.gamma > 0 ? io::Cell(e.gamma) : io::Cell(io::not_available);
-            row[2] = static_cast<double>(e.runs.size()), row[9] = "UNUSABLE fill, " + why;
+            row[2] = static_cast<double>(e.measured.size()), row[9] = "UNUSABLE fill, " + why;
             t.rows.push_back(std::move(row));
             return;
         }
         const auto& s = e.slump_over_height;
         const auto& d = e.spread_over_diameter;
         std::size_t rest = 0;
-        for (const auto& r : e.runs) rest += r.result.came_to_rest;
-        t.rows.push_back({e.sf, e.gamma > 0 ? io::Cell(e.gamma) : io::Cell(io::not_available), static_cast<double>(e.runs.size()), s.mean,
+        std::size_t standing = 0, slumped = 0;
+        double slumped_sum = 0;
+        for (const auto& r : e.measured) {
+            rest += r.at_rest;
+            if (r.slump_over_height < stats::TransitionSettings{}.stands_below) standing++;
+            else slumped++, slumped_sum += r.slump_over_height;
+        }
+        const bool wet_level = e.gamma > 0;
+        t.rows.push_back({e.sf, wet_level ? io::Cell(e.gamma) : io::Cell(io::not_available), static_cast<double>(e.measured.size()), s.mean,
                           s.ci.low, s.ci.high, d.mean, d.ci.low, d.ci.high,
-                          std::to_string(rest) + " of " + std::to_string(e.runs.size()), split_label(study, e)});
+                          std::to_string(rest) + " of " + std::to_string(e.measured.size()), split_label(study, e),
+                          wet_level ? io::Cell(static_cast<double>(standing)) : io::Cell(io::not_available),
+                          wet_level && slumped > 0 ? io::Cell(slumped_sum / static_cast<double>(slumped)) : io::Cell(io::not_available)});
     };
     for (const auto& e : study.fine) add(e);
     for (const auto& levels : study.coarse)
@@ -73,21 +82,46 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     if (study.has_control()) t.notes.push_back("rows without a surface tension after the levels: the dry control (no liquid), fine then each S_f");
     if (study.wet) t.notes.push_back("coarse levels: gamma is the coarse run's own surface tension (gamma-bar)");
     if (!study.split.empty()) t.notes.push_back(split_note);
+    if (study.wet) t.notes.push_back("standing: seeds whose column slumped less than 0.3 of its fill height; slumped_mean: the mean slump of the others");
     return t;
 }
 
 io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::string& scene_label) {
     io::Table t;
-    t.title = "Measured exponent k-hat of gamma-bar = gamma S_f^k, from the shift of the response curves (" + scene_label + ")";
-    t.metadata = {{"estimator", "least-squares shift of the coarse means onto the fine curve (monotone cubic through the fine means, "
-                                "flat beyond), k = shift / ln S_f; 95 % percentile bootstrap over seeds (docs/exponent-estimate.md)"}};
-    t.columns = {"sf", "comparison", "k_hat", "k_low", "k_high", "dry_offset_pct_of_height", "determined", "split_levels", "rms_at_k_hat",
+    t.title = "Measured exponent k-hat of gamma-bar = gamma S_f^k, from the response curves (" + scene_label + ")";
+    t.metadata = {{"decides", "the transition model (probit of standing against ln gamma - k ln S_f, and the slumped runs' branch; 95 % "
+                              "profile likelihood interval; docs/exponent-estimate.md)"},
+                  {"beside it", "the means shift: least-squares shift of the coarse means onto the fine curve, 95 % bootstrap over seeds"}};
+    t.columns = {"sf", "method", "comparison", "k_hat", "k_low", "k_high", "determined", "k_pass_low", "k_pass_high", "k_pass_low_at_k_hat",
+                 "k_pass_high_at_k_hat", "standing_runs", "slumped_runs", "dry_offset_pct_of_height", "split_levels", "rms_at_k_hat",
                  "rms_at_k1", "rms_at_k2", "rms_at_k3", "groups_inside"};
-    t.headings = {"S_f", "comparison", "k̂", "k low (95 %)", "k high (95 %)", "dry offset, % of fill height", "determined",
+    t.headings = {"S_f", "method", "comparison", "k̂", "k low (95 %)", "k high (95 %)", "determined", "k passing from", "k passing to",
+                  "k passing from (at k̂)", "k passing to (at k̂)", "standing runs", "slumped runs", "dry offset, % of fill height",
                   "split levels", "rms at k̂", "rms at k = 1", "rms at k = 2", "rms at k = 3", "similarity groups inside the interval"};
-    t.metadata.push_back({"decides", study.has_control() ? "baseline-corrected: the dry control's coarse - fine offset subtracted"
-                                                         : "raw (no dry control: --baseline none)"});
-    auto rows = [&](const std::vector<stats::ExponentEstimate>& estimates, const std::string& comparison, bool with_control) {
+    const bool corrected = study.has_control();
+    const std::string decisive = corrected ? "baseline-corrected" : "raw";
+    auto groups_in = [](const stats::Interval& ci, bool determined) {
+        std::string inside;
+        for (const auto& g : groups)
+            if (ci.contains(g.k)) inside += (inside.empty() ? "" : ", ") + std::string(g.name) + " k = " + format_short(g.k);
+        return !determined ? std::string("undetermined") : inside.empty() ? std::string("none") : inside;
+    };
+    const io::Cell na(io::not_available);
+    auto model_rows = [&](const std::vector<stats::TransitionFit>& fits, const std::string& comparison, bool with_ranges) {
+        for (std::size_t i = 0; i < fits.size(); ++i) {
+            const auto& f = fits[i];
+            const stats::PassingRange* p = with_ranges && i < study.passing.size() ? &study.passing[i] : nullptr;
+            auto end = [&](double k, bool open) { return p && !open && !p->empty() ? io::Cell(k) : na; };
+            const double offset = f.sf != 0 && !f.offsets.empty() && corrected && comparison != "raw" ? f.offsets.front() : NAN;
+            t.rows.push_back({f.sf == 0 ? io::Cell("all") : io::Cell(f.sf), "transition model", comparison, f.k, f.ci.low, f.ci.high,
+                              f.determined ? "yes" : "no", p ? end(p->over_interval.low, p->low_open) : na,
+                              p ? end(p->over_interval.high, p->high_open) : na, p && !p->low_open ? io::Cell(p->at_k_hat.low) : na,
+                              p && !p->high_open ? io::Cell(p->at_k_hat.high) : na, static_cast<double>(f.standing),
+                              static_cast<double>(f.slumped), std::isnan(offset) ? na : io::Cell(100 * offset), na, na, na, na, na,
+                              groups_in(f.ci, f.determined)});
+        }
+    };
+    auto shift_rows = [&](const std::vector<stats::ExponentEstimate>& estimates, const std::string& comparison, bool with_control) {
         for (const auto& e : estimates) {
             auto cs = curves_of(study, e);
             auto fine = study.fine_curve;
@@ -95,28 +129,28 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
                 fine.control = {};
                 for (auto& c : cs) c.control = {};
             }
-            std::string inside;
-            for (const auto& g : groups)
-                if (e.ci.contains(g.k)) inside += (inside.empty() ? "" : ", ") + std::string(g.name) + " k = " + format_short(g.k);
-            if (!e.determined) inside = "undetermined: no unique shift maps the curves onto each other";
-            else if (inside.empty()) inside = "none";
-            t.rows.push_back({sf_label(e), comparison, e.k, e.ci.low, e.ci.high,
-                              e.sf == 0 || !with_control ? io::Cell(io::not_available) : io::Cell(100 * e.offset),
-                              e.determined ? "yes" : "no", static_cast<double>(e.split_levels), e.rms,
+            t.rows.push_back({sf_label(e), "means shift", comparison, e.k, e.ci.low, e.ci.high, e.determined ? "yes" : "no", na, na, na, na,
+                              na, na, e.sf == 0 || !with_control ? na : io::Cell(100 * e.offset), static_cast<double>(e.split_levels), e.rms,
                               stats::shift_residual_rms(fine, cs, 1), stats::shift_residual_rms(fine, cs, 2),
-                              stats::shift_residual_rms(fine, cs, 3), inside});
+                              stats::shift_residual_rms(fine, cs, 3), groups_in(e.ci, e.determined)});
         }
     };
-    rows(study.estimates, study.has_control() ? "baseline-corrected" : "raw", study.has_control());
-    if (study.has_control()) rows(study.raw_estimates, "raw", false);
-    t.notes.push_back("sf 'all': one k for every scale factor together");
-    if (study.has_control())
+    model_rows(study.fits, decisive, true);
+    if (corrected) model_rows(study.raw_fits, "raw", false);
+    shift_rows(study.estimates, decisive, corrected);
+    if (corrected) shift_rows(study.raw_estimates, "raw", false);
+    t.notes.push_back("sf 'all': one k for every scale factor together; the first rows (transition model, " + decisive + ") decide");
+    if (corrected)
         t.notes.push_back("baseline-corrected: each coarse curve less the dry control's offset (dry coarse - dry fine slump over fill "
                           "height, same seeds), so that what S_f changes without liquid is not read as a shift in k; raw: without it");
-    t.notes.push_back("rms: root mean square difference of the coarse means (slump over fill height) from the shifted fine curve");
+    t.notes.push_back("k passing: the k whose coarse slump the model puts within the scene's slump tolerance of the fine one, for every k in "
+                      "the interval (from, to) and at k-hat exactly; n/a where the band reaches the end of the fine levels (open) or "
+                      "nothing passes for the whole interval");
+    t.notes.push_back("standing runs: slump below 0.3 of the fill height; rms (means shift): root mean square difference of the coarse "
+                      "means from the shifted fine curve");
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
-    t.notes.push_back("split_levels: the levels it rests on whose seeds split between the ends of the response (response table, "
-                      "seeds_split); with any, the interval understates the uncertainty");
+    t.notes.push_back("split_levels (means shift): the levels it rests on whose seeds split between the ends of the response; its bootstrap "
+                      "interval then understates the uncertainty (the transition model's does not)");
     return t;
 }
 
@@ -149,40 +183,79 @@ std::string at_sf(double sf, const std::string& x) {
     return "(abs(column(\"sf\") - " + format_number(sf) + ") < 1e-9 ? " + x + " : NaN)";
 }
 
-std::string figure_script(const slump::ResponseStudy& study, const std::string& label, double k_hat) {
+// The transition model's curves as gnuplot functions of γ (fine, or collapsed γ̄ / S_f^k̂).
+std::string model_functions(const stats::TransitionFit& f) {
+    std::ostringstream s;
+    s << "theta = " << format_number(std::isnan(f.threshold) ? 0.0 : f.threshold) << "; width = " << format_number(std::isnan(f.width) ? 1.0 : f.width)
+      << "; centre = " << format_number(f.centre) << "\n";
+    s << "p_stand(g) = " << (std::isnan(f.threshold) ? (f.standing > 0 && f.slumped == 0 ? "1" : "0") : "0.5*erfc(-(log(g)-theta)/width/sqrt(2))") << "\n";
+    s << "branch(g) = ";
+    for (std::size_t j = 0; j < f.branch.size(); ++j) s << (j ? " + " : "") << "(" << format_number(f.branch[j]) << ")*(log(g)-centre)**" << j;
+    if (f.branch.empty()) s << "NaN";
+    s << "\nmean_response(g) = (1-p_stand(g))*branch(g) + p_stand(g)*" << format_number(f.standing_slump) << "\n";
+    return s.str();
+}
+
+std::string figure_script(const slump::ResponseStudy& study, const std::string& label) {
+    const stats::TransitionFit& fit = study.fits.back();
+    const double k_hat = fit.k;
     std::vector<double> sfs = {1};
     for (const auto& c : study.coarse_curves) sfs.push_back(c.sf);
+    auto offset_of = [&](std::size_t i) { return i == 0 || fit.offsets.size() < i ? 0.0 : fit.offsets[i - 1]; };
     std::ostringstream s;
-    s << "# Generated by demscale: response curves, raw and collapsed, and the residual against k\n"
+    s << "# Generated by demscale: response curves, raw and collapsed, the transition model's two parts, and k's profiles\n"
          "if (!exists(\"outfile\")) outfile = 'estimate_collapse.png'\n"
-         "set terminal pngcairo size 1500,900 enhanced font 'DejaVu Sans,11'\nset output outfile\n"
+         "set terminal pngcairo size 1500,1250 enhanced font 'DejaVu Sans,11'\nset output outfile\n"
          "set datafile separator comma\nset datafile columnheaders\nset grid lc rgb '#dddddd'\n"
          "set key top right box opaque\n"
-      << "set multiplot layout 2,3 title \"Slump response to surface tension, " << label
-      << "\\n{/*0.85 bars: 95 % intervals over seeds; collapsed: coarse γ̄ divided by S_f^k}\" font ',13'\n"
+      << model_functions(fit)
+      << "set multiplot layout 3,3 title \"Slump response to surface tension, " << label
+      << "\\n{/*0.85 points: ensembles (bars: 95 % over seeds); collapsed: coarse γ̄ divided by S_f^k; lines: the transition model at k̂ = "
+      << format_short(k_hat, 3) << "}\" font ',13'\n"
          "set logscale x\nset ylabel 'slump / fill height'\nset yrange [0:*]\n";
-    auto panel = [&](const std::string& title, const std::string& k_expr, const std::string& xlabel) {
+    auto x_of = [&](double sf, const std::string& k_expr) {
+        return sf == 1 ? std::string("column(\"gamma_n_per_m\")") : "column(\"gamma_n_per_m\")/" + format_number(sf) + "**(" + k_expr + ")";
+    };
+    auto name = [](double sf) { return sf == 1 ? std::string("fine") : "S_f = " + format_short(sf, 3); };
+    auto panel = [&](const std::string& title, const std::string& k_expr, const std::string& xlabel, bool model) {
         s << "set title '" << title << "'\nset xlabel '" << xlabel << "'\nplot \\\n";
-        for (std::size_t i = 0; i < sfs.size(); ++i) {
-            const double sf = sfs[i];
-            const std::string x = sf == 1 ? "column(\"gamma_n_per_m\")" : "column(\"gamma_n_per_m\")/" + format_number(sf) + "**(" + k_expr + ")";
-            s << (i ? ", \\\n" : "") << "  'estimate_response.csv' using " << at_sf(sf, x)
-              << ":\"slump_over_height\":\"slump_low\":\"slump_high\" with yerrorlines lw 2 lc " << i + 1 << " pt " << i + 5
-              << " title '" << (sf == 1 ? "fine" : "S_f = " + format_short(sf, 3)) << "'";
-        }
+        for (std::size_t i = 0; i < sfs.size(); ++i)
+            s << (i ? ", \\\n" : "") << "  'estimate_response.csv' using " << at_sf(sfs[i], x_of(sfs[i], k_expr))
+              << ":\"slump_over_height\":\"slump_low\":\"slump_high\" with yerrorbars lw 2 lc " << i + 1 << " pt " << i + 5 << " title '"
+              << name(sfs[i]) << "'";
+        if (model) s << ", \\\n  mean_response(x) with lines lw 2 lc rgb 'black' title 'model: mean response'";
         s << "\n";
     };
-    panel("as run (γ of each run)", "0", "surface tension γ of the run (N/m)");
-    panel("collapsed at the measured k = " + format_short(k_hat, 3), format_number(k_hat), "γ̄ / S_f^k (N/m)");
+    panel("as run (γ of each run)", "0", "surface tension γ of the run (N/m)", false);
+    panel("collapsed at k̂ = " + format_short(k_hat, 3) + " (transition model)", format_number(k_hat), "γ̄ / S_f^k (N/m)", true);
+    // The quantal part: the share of seeds standing, and the probit.
+    s << "set title 'quantal part: columns that stood (slump < 0.3 H_0)'\nset xlabel 'γ̄ / S_f^{k̂} (N/m)'\nset ylabel 'share standing'\n"
+         "set yrange [-0.05:1.05]\nplot \\\n";
+    for (std::size_t i = 0; i < sfs.size(); ++i)
+        s << (i ? ", \\\n" : "") << "  'estimate_response.csv' using " << at_sf(sfs[i], x_of(sfs[i], format_number(k_hat)))
+          << ":(column(\"standing\")/column(\"seeds\")) with points pt " << i + 5 << " ps 1.5 lc " << i + 1 << " title '" << name(sfs[i]) << "'";
+    s << ", \\\n  p_stand(x) with lines lw 2 lc rgb 'black' title 'probit'\n";
+    // The continuous part: the slumped runs' mean, the dry offset removed, and the branch.
+    s << "set title 'continuous part: the runs that slumped (dry offset removed)'\nset ylabel 'slump / fill height'\nset yrange [*:*]\nplot \\\n";
+    for (std::size_t i = 0; i < sfs.size(); ++i)
+        s << (i ? ", \\\n" : "") << "  'estimate_response.csv' using " << at_sf(sfs[i], x_of(sfs[i], format_number(k_hat)))
+          << ":(column(\"slumped_mean\") - " << format_number(offset_of(i)) << ") with points pt " << i + 5 << " ps 1.5 lc " << i + 1
+          << " title '" << name(sfs[i]) << "'";
+    s << ", \\\n  branch(x) with lines lw 2 lc rgb 'black' title 'slumped branch'\nset yrange [0:*]\n";
     for (const auto& g : groups)
-        panel("collapsed at k = " + format_short(g.k) + " (" + g.name + ")", format_number(g.k), "γ̄ / S_f^k (N/m)");
-    s << "unset logscale x\nset yrange [0:*]\nset title 'residual against k'\nset xlabel 'exponent k'\n"
+        panel("collapsed at k = " + format_short(g.k) + " (" + g.name + ")", format_number(g.k), "γ̄ / S_f^k (N/m)", false);
+    s << "unset logscale x\nset title 'means shift: residual against k'\nset xlabel 'exponent k'\n"
          "set ylabel 'rms residual (slump / fill height)'\nplot \\\n";
     for (std::size_t i = 1; i < sfs.size(); ++i)
         s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"rms_sf" << format_short(sfs[i], 3)
           << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
     if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"rms_all\" with lines lw 3 lc rgb 'black' title 'all'";
-    s << "\nunset multiplot\n";
+    s << "\nset title 'transition model: profile deviance against k'\nset ylabel '2 (ℓ(k̂) − ℓ(k))'\nset yrange [0:20]\nplot \\\n";
+    for (std::size_t i = 1; i < sfs.size(); ++i)
+        s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"deviance_sf" << format_short(sfs[i], 3)
+          << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
+    if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"deviance_all\" with lines lw 3 lc rgb 'black' title 'all'";
+    s << ", \\\n  " << format_number(fit.cutoff) << " with lines dt 2 lc rgb 'gray40' title '95 % cutoff'\nunset multiplot\n";
     return s.str();
 }
 
@@ -196,6 +269,7 @@ EstimateFiles write_estimate_files(const slump::ResponseStudy& study, const std:
         f.written.push_back(out_dir / name);
     };
     write("estimate_response.csv", io::render(response_table(study, scene_label), io::Format::csv));
+    write("runs.csv", io::render(slump::runs_table(slump::response_runs(study), scene_label), io::Format::csv));
     if (!study.wet) {
         write("estimate_dry_control.csv", io::render(dry_baseline_table(study, scene_label), io::Format::csv));
         return f;
@@ -206,15 +280,18 @@ EstimateFiles write_estimate_files(const slump::ResponseStudy& study, const std:
     residual.columns = {"k"};
     for (const auto& c : study.coarse_curves) residual.columns.push_back("rms_sf" + format_short(c.sf, 3));
     if (study.coarse_curves.size() > 1) residual.columns.push_back("rms_all");
-    for (int i = 0; i <= 140; ++i) {
-        const double k = -1 + 0.05 * i;
+    for (const auto& fit : study.fits) residual.columns.push_back(fit.sf == 0 ? "deviance_all" : "deviance_sf" + format_short(fit.sf, 3));
+    for (std::size_t i = 0; i < study.fits.front().profile_k.size(); ++i) {  // the transition model's grid
+        const double k = study.fits.front().profile_k[i];
+        if (k < -1 - 1e-9 || k > 6 + 1e-9) continue;
         std::vector<io::Cell> row = {k};
         for (const auto& c : study.coarse_curves) row.push_back(stats::shift_residual_rms(study.fine_curve, {c}, k));
         if (study.coarse_curves.size() > 1) row.push_back(stats::shift_residual_rms(study.fine_curve, study.coarse_curves, k));
+        for (const auto& fit : study.fits) row.push_back(fit.profile_deviance[i]);
         residual.rows.push_back(std::move(row));
     }
     write("estimate_residual.csv", io::render(residual, io::Format::csv));
-    write("estimate_collapse.gp", figure_script(study, io::gnuplot_literal(scene_label), study.estimates.back().k));
+    write("estimate_collapse.gp", figure_script(study, io::gnuplot_literal(scene_label)));
     if (render_png) {
         f.figure_png = out_dir / "estimate_collapse.png";
         io::render_gnuplot(out_dir / "estimate_collapse.gp", f.figure_png);

@@ -13,13 +13,13 @@
 namespace demscale::slump {
 
 std::string ResponseEnsemble::unusable() const {
-    for (const auto& r : runs)
-        if (!r.unusable.empty()) return "seed " + std::to_string(r.scene.seed) + ": " + r.unusable;
+    for (const auto& r : measured)
+        if (!r.unusable.empty()) return "seed " + std::to_string(r.seed) + ": " + r.unusable;
     return "";
 }
 
 bool ResponseEnsemble::all_at_rest() const {
-    return std::all_of(runs.begin(), runs.end(), [](const StudyRun& r) { return r.result.came_to_rest; });
+    return std::all_of(measured.begin(), measured.end(), [](const RunRow& r) { return r.at_rest; });
 }
 
 namespace {
@@ -43,12 +43,33 @@ ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int s
     return e;
 }
 
-void summarize_ensemble(ResponseEnsemble& e, double bottom_diameter) {
+void measure(ResponseEnsemble& e, double bottom_diameter) {
+    e.measured.clear();
+    for (const auto& r : e.runs) {
+        RunRow m;
+        m.sf = e.sf, m.gamma = e.gamma, m.seed = static_cast<long>(r.scene.seed), m.unusable = r.unusable;
+        if (m.unusable.empty()) {
+            m.slump_over_height = slump_over_height(r.result), m.spread_over_d0 = r.result.final.spread / bottom_diameter;
+            m.at_rest = r.result.came_to_rest;
+        }
+        e.measured.push_back(m);
+    }
+}
+
+void summarize_ensemble(ResponseEnsemble& e) {
     if (!e.unusable().empty()) return;  // no column to measure
     std::vector<double> s, d;
-    for (const auto& r : e.runs) s.push_back(slump_over_height(r.result)), d.push_back(r.result.final.spread / bottom_diameter);
+    for (const auto& r : e.measured) s.push_back(r.slump_over_height), d.push_back(r.spread_over_d0);
     e.slump_over_height = stats::summarize(s);
     e.spread_over_diameter = stats::summarize(d);
+}
+
+// An ensemble's slump over fill height, one value per seed with its seed.
+stats::ResponseLevel level_of(const ResponseEnsemble& e) {
+    stats::ResponseLevel l;
+    l.x = e.gamma > 0 ? std::log(e.gamma) : 0.0;
+    for (const auto& r : e.measured) l.y.push_back(r.slump_over_height), l.seed.push_back(r.seed);
+    return l;
 }
 
 stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& levels) {
@@ -56,10 +77,7 @@ stats::ResponseCurve curve(double sf, const std::vector<ResponseEnsemble>& level
     c.sf = sf;
     for (const auto& e : levels) {
         if (!e.unusable().empty()) continue;  // a level whose fills the cone could not hold is no point of the curve
-        stats::ResponseLevel l;
-        l.x = std::log(e.gamma);
-        for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result)), l.seed.push_back(r.scene.seed);
-        c.levels.push_back(l);
+        c.levels.push_back(level_of(e));
     }
     return c;
 }
@@ -155,6 +173,48 @@ ResponseStudy plan_response_runs(const ResponsePlan& plan) {
     return study;
 }
 
+namespace {
+
+// Everything after the runs: summaries, curves, k (wet) or the dry control's differences (dry).
+void judge_response(ResponseStudy& study, const ResponsePlan& plan) {
+    for (auto& e : study.fine) summarize_ensemble(e);
+    for (auto& levels : study.coarse)
+        for (auto& e : levels) summarize_ensemble(e);
+    for (auto& e : study.dry_control) summarize_ensemble(e);
+    for (const auto& e : study.dry_control)
+        if (const auto why = e.unusable(); !why.empty())
+            throw std::runtime_error("the dry control at S_f = " + format_short(e.sf, 3) + ", " + why);
+    if (!study.wet) {
+        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
+            study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front(), plan.fine));
+        return;
+    }
+    study.fine_curve = curve(1, study.fine);
+    if (study.fine_curve.levels.size() < 2)
+        throw std::runtime_error("fewer than two fine levels whose fills the cone could hold: no fine response curve");
+    for (std::size_t s = 0; s < plan.scale_factors.size(); ++s) {
+        study.coarse_curves.push_back(curve(plan.scale_factors[s], study.coarse[s]));
+        if (study.coarse_curves.back().levels.empty())
+            throw std::runtime_error("S_f = " + format_short(plan.scale_factors[s], 3) + ": no level's fills could be used (" +
+                                     study.coarse[s].front().unusable() + ")");
+    }
+    if (study.has_control()) {
+        study.raw_estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+        study.raw_fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
+        study.fine_curve.control = level_of(study.dry_control.front());
+        for (std::size_t s = 0; s < study.coarse_curves.size(); ++s) study.coarse_curves[s].control = level_of(study.dry_control[s + 1]);
+    }
+    study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
+    study.fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
+    study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
+    study.fine_range = {INFINITY, -INFINITY};
+    for (const auto& l : study.fine_curve.levels) study.fine_range = {std::min(study.fine_range.low, l.x), std::max(study.fine_range.high, l.x)};
+    study.passing = stats::passing_ranges(study.fits, plan.scale_factors, std::log(plan.fine.liquid.surface_tension_n_per_m),
+                                          plan.fine.tolerances.slump, study.fine_range);
+}
+
+}  // namespace
+
 ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log) {
     const auto start = std::chrono::steady_clock::now();
     ResponseStudy study = plan_response_runs(plan);
@@ -162,47 +222,65 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
     BatchOptions batch = plan.batch;
     batch.reference_radius_m = plan.fine.radius_m;
     run_batch(all, batch, log);
-
     const double d0 = plan.fine.bottom_diameter_m;
-    for (auto& e : study.fine) summarize_ensemble(e, d0);
+    for (auto& e : study.fine) measure(e, d0);
     for (auto& levels : study.coarse)
-        for (auto& e : levels) summarize_ensemble(e, d0);
-    for (auto& e : study.dry_control) summarize_ensemble(e, d0);
-    for (const auto& e : study.dry_control)
-        if (const auto why = e.unusable(); !why.empty())
-            throw std::runtime_error("the dry control at S_f = " + format_short(e.sf, 3) + ", " + why);
-    if (study.wet) {
-        study.fine_curve = curve(1, study.fine);
-        if (study.fine_curve.levels.size() < 2)
-            throw std::runtime_error("fewer than two fine levels whose fills the cone could hold: no fine response curve");
-        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s) {
-            study.coarse_curves.push_back(curve(plan.scale_factors[s], study.coarse[s]));
-            if (study.coarse_curves.back().levels.empty())
-                throw std::runtime_error("S_f = " + format_short(plan.scale_factors[s], 3) + ": no level's fills could be used (" +
-                                         study.coarse[s].front().unusable() + ")");
+        for (auto& e : levels) measure(e, d0);
+    for (auto& e : study.dry_control) measure(e, d0);
+    judge_response(study, plan);
+    study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return study;
+}
+
+std::vector<RunRow> response_runs(const ResponseStudy& study) {
+    std::vector<RunRow> rows;
+    auto add = [&](const ResponseEnsemble& e) { rows.insert(rows.end(), e.measured.begin(), e.measured.end()); };
+    for (const auto& e : study.fine) add(e);
+    for (const auto& levels : study.coarse)
+        for (const auto& e : levels) add(e);
+    for (const auto& e : study.dry_control) add(e);
+    return rows;
+}
+
+ResponseStudy response_study_from_runs(const std::vector<RunRow>& rows, ResponsePlan plan, const std::string& source) {
+    const auto start = std::chrono::steady_clock::now();
+    if (!plan.fine.wet) throw InputError("--runs", source, "runs of a wet scene (a dry scene's estimate compares whole piles: run it)");
+    // Ensembles in the order of first appearance, levels sorted by γ within each S_f.
+    std::vector<double> sfs;
+    for (const auto& r : rows)
+        if (r.sf > 1 && std::find(sfs.begin(), sfs.end(), r.sf) == sfs.end()) sfs.push_back(r.sf);
+    std::sort(sfs.begin(), sfs.end());
+    ResponseStudy study;
+    study.wet = true;
+    study.coarse.resize(sfs.size());
+    auto place = [&](std::vector<ResponseEnsemble>& list, const RunRow& r) {
+        auto it = std::find_if(list.begin(), list.end(), [&](const ResponseEnsemble& e) { return e.gamma == r.gamma && e.sf == r.sf; });
+        if (it == list.end()) {
+            list.push_back({});
+            it = list.end() - 1;
+            it->sf = r.sf, it->gamma = r.gamma;
         }
-        if (study.has_control()) {
-            study.raw_estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
-            study.raw_fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
-            auto control = [](const ResponseEnsemble& e) {
-                stats::ResponseLevel l;
-                for (const auto& r : e.runs) l.y.push_back(slump_over_height(r.result)), l.seed.push_back(r.scene.seed);
-                return l;
-            };
-            study.fine_curve.control = control(study.dry_control.front());
-            for (std::size_t s = 0; s < study.coarse_curves.size(); ++s) study.coarse_curves[s].control = control(study.dry_control[s + 1]);
-        }
-        study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
-        study.fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
-        study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
-        study.fine_range = {INFINITY, -INFINITY};
-        for (const auto& l : study.fine_curve.levels) study.fine_range = {std::min(study.fine_range.low, l.x), std::max(study.fine_range.high, l.x)};
-        study.passing = stats::passing_ranges(study.fits, plan.scale_factors, std::log(plan.fine.liquid.surface_tension_n_per_m),
-                                              plan.fine.tolerances.slump, study.fine_range);
-    } else {
-        for (std::size_t s = 0; s < plan.scale_factors.size(); ++s)
-            study.baselines.push_back(baseline(plan.scale_factors[s], study.fine.front(), study.coarse[s].front(), plan.fine));
+        it->measured.push_back(r);
+    };
+    std::vector<ResponseEnsemble> dry;
+    for (const auto& r : rows) {
+        if (r.gamma == 0) place(dry, r);
+        else if (r.sf == 1) place(study.fine, r);
+        else place(study.coarse[static_cast<std::size_t>(std::find(sfs.begin(), sfs.end(), r.sf) - sfs.begin())], r);
     }
+    auto by_gamma = [](const ResponseEnsemble& a, const ResponseEnsemble& b) { return a.gamma < b.gamma; };
+    std::sort(study.fine.begin(), study.fine.end(), by_gamma);
+    for (auto& levels : study.coarse) std::sort(levels.begin(), levels.end(), by_gamma);
+    if (study.fine.size() < 2) throw InputError("--runs", source, "runs at two or more fine (sf = 1) surface tensions");
+    if (sfs.empty()) throw InputError("--runs", source, "runs of at least one coarse scale factor (sf > 1) with liquid");
+    if (!dry.empty()) {  // the dry control: fine, then each S_f, or none at all
+        std::sort(dry.begin(), dry.end(), [](const auto& a, const auto& b) { return a.sf < b.sf; });
+        if (dry.size() != sfs.size() + 1 || dry.front().sf != 1)
+            throw InputError("--runs", source, "dry control rows (gamma 0) for the fine scene and every coarse S_f, or for none");
+        study.dry_control = std::move(dry);
+    }
+    plan.scale_factors = sfs;
+    judge_response(study, plan);
     study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return study;
 }

@@ -15,6 +15,7 @@
 
 #include "slump/ensemble_verdict.hpp"
 #include "slump/run_batch.hpp"
+#include "slump/runs_file.hpp"
 #include "stats/curve_shift.hpp"
 #include "stats/passing_range.hpp"
 #include "stats/transition_model.hpp"
@@ -37,10 +38,11 @@ struct ResponsePlan {
 struct ResponseEnsemble {
     double sf = 1;
     double gamma = 0;            // N/m (0 dry)
-    std::vector<StudyRun> runs;  // one per seed
+    std::vector<StudyRun> runs;  // one per seed (none when read from a runs file)
+    std::vector<RunRow> measured;  // what the estimator reads of each run: from runs, or a runs file
     stats::Summary slump_over_height, spread_over_diameter;
     bool all_at_rest() const;
-    std::string unusable() const;  // the first unusable fill's reason (StudyRun::unusable); empty: every fill a column
+    std::string unusable() const;  // the first unusable fill's reason (RunRow::unusable); empty: every fill a column
 };
 
 // Coarse − fine at one S_f on a dry scene: the baseline error of coarse-graining the dry laws.
@@ -89,5 +91,15 @@ void validate_response_plan(const ResponsePlan& plan);
 ResponseStudy plan_response_runs(const ResponsePlan& plan);
 
 ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<void(const std::string&)>& log = {});
+
+// The study's measures of every run (fine, coarse, dry control), in that order: what runs.csv holds.
+std::vector<RunRow> response_runs(const ResponseStudy& study);
+
+// A wet study from a runs file's rows (slump/runs_file.hpp), judged as run_response_study judges
+// its own runs: rows with S_f 1 make the fine curve, each S_f > 1 a coarse one, rows without liquid
+// (γ = 0) the dry control. plan.fine gives γ and the tolerance; plan.scale_factors, factors and
+// seeds are replaced by the file's. Throws InputError for rows that make no study (no fine levels,
+// a dry control for some curves only).
+ResponseStudy response_study_from_runs(const std::vector<RunRow>& rows, ResponsePlan plan, const std::string& source);
 
 }  // namespace demscale::slump

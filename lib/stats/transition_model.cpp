@@ -48,7 +48,7 @@ struct Data {
 
 Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s) {
     Data d;
-    std::vector<std::pair<std::size_t, double>> slumped_levels;
+    std::size_t fine_slumped_levels = 0;
     double fine_x = 0;
     std::size_t fine_n = 0;
     for (std::size_t c = 0; c < curves.size(); ++c)
@@ -61,11 +61,14 @@ Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSet
                 else d.slumped++, any = true;
                 if (!stands && c == 0) fine_x += l.x, fine_n++;
             }
-            if (any) slumped_levels.emplace_back(c, l.x);
+            fine_slumped_levels += any && c == 0;
         }
     if (d.standing > 0) d.standing_slump /= static_cast<double>(d.standing);
     d.centre = fine_n > 0 ? fine_x / static_cast<double>(fine_n) : 0.0;
-    d.degree = slumped_levels.size() >= 4 ? 2 : slumped_levels.size() >= 2 ? 1 : 0;
+    // The branch's shape comes from the fine levels alone, so that no shift of the coarse ones can
+    // lend it a curvature (coarse levels that land on fine ones at some k would otherwise change
+    // the polynomial's rank there).
+    d.degree = fine_slumped_levels >= 3 ? 2 : fine_slumped_levels >= 2 ? 1 : 0;
     d.controls = std::all_of(curves.begin(), curves.end(), [](const auto* c) { return !c->control.y.empty(); });
     if (d.controls)
         for (const auto* c : curves) d.control.push_back(c->control.y);
@@ -157,7 +160,7 @@ Branch fit_branch(const Data& d, double k) {
         const double previous = b.sigma, previous_dry = b.sigma_dry;
         Eigen::VectorXd w(A.rows());
         for (Eigen::Index r = 0; r < A.rows(); ++r) w(r) = 1 / (dry[static_cast<std::size_t>(r)] ? b.sigma_dry : b.sigma);
-        b.p = (w.asDiagonal() * A).colPivHouseholderQr().solve(w.asDiagonal() * y);
+        b.p = (w.asDiagonal() * A).completeOrthogonalDecomposition().solve(w.asDiagonal() * y);
         const Eigen::VectorXd res = y - A * b.p;
         double ss = 0, ss_dry = 0;
         std::size_t n = 0, n_dry = 0;

@@ -7,7 +7,7 @@
 //               P(stand) = Φ((u − θ) / w), a probit in u with one threshold θ and one width w for
 //               every curve (the coarse threshold is the fine one moved by k ln S_f);
 //  continuous — the slump of the runs that slumped: y = β₀ + β₁ v + β₂ v² + b_S, v = u − ū,
-//               residual sd σ (β₂ only with four or more levels that hold slumped runs); b_S is the
+//               residual sd σ (β₂ with three or more fine levels that hold slumped runs, β₁ with two); b_S is the
 //               dry offset of S_f, b_S = d_S − d₁, where the dry controls enter as y = d_S with their
 //               own sd σ_dry (no control: b_S = 0).
 // Runs are independent given the model: the fill is poured anew at every γ, so a seed's runs at

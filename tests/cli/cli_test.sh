@@ -283,17 +283,28 @@ case $case_name in
     [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { cat "$work/out" >&2; fail "exit $rc"; }
     grep -q '16 distinct runs' "$work/out" || fail "did not say what it runs (3 levels x 2 seeds, fine and S_f = 1.4, and the dry control)"
     grep -q 'left' "$work/out" || fail "no estimate of the time left"
-    grep -q '^S_f = 1.4: k-hat = ' "$work/out" || fail "no estimate printed"
-    grep -q '6 fine runs (3 levels x 2 seeds)' "$work/out" || fail "cost of the fine curve not stated"
+    grep -q '^  S_f = 1.4: k-hat = .*standing.*slumped runs' "$work/out" || fail "no estimate printed"
+    grep -q 'transition model (decides' "$work/out" || fail "which estimate decides not said"
+    grep -q '6 fine runs at 3 levels' "$work/out" || fail "cost of the fine curve not stated"
     for f in estimate_response.csv estimate_exponent.csv estimate_residual.csv estimate_collapse.gp; do
       [ -s "$work/e/$f" ] || fail "$f missing"
     done
     grep -qi 'nan\|inf' "$work/e/estimate_exponent.csv" "$work/e/estimate_response.csv" && fail "NaN or inf in the estimate"
     [ "$(grep -c '^1.4,[0-9]' "$work/e/estimate_response.csv")" -eq 3 ] || fail "not three coarse levels"
     [ "$(grep -c '^1.4,n/a' "$work/e/estimate_response.csv")" -eq 1 ] || fail "no dry control at S_f = 1.4"
-    grep -q '^1.4,baseline-corrected,' "$work/e/estimate_exponent.csv" || fail "no baseline-corrected estimate"
-    grep -q '^1.4,raw,' "$work/e/estimate_exponent.csv" || fail "no raw estimate beside it"
-    grep -v '^#' "$work/e/estimate_response.csv" | head -1 | grep -q ',seeds_split$' || fail "response table does not say which levels split"
+    grep -q '^1.4,transition model,baseline-corrected,' "$work/e/estimate_exponent.csv" || fail "no baseline-corrected estimate"
+    grep -q '^1.4,transition model,raw,' "$work/e/estimate_exponent.csv" || fail "no raw estimate beside it"
+    grep -q '^1.4,means shift,baseline-corrected,' "$work/e/estimate_exponent.csv" || fail "no means shift beside the model"
+    # The study's runs, one row per run (6 fine, 6 coarse, 4 dry), read back: the same estimate to the bit.
+    [ "$(grep -c '^1\(\.4\)\?,' "$work/e/runs.csv")" -eq 16 ] || fail "runs.csv does not hold the 16 runs"
+    "$demscale" estimate-exponent --scene "$src/data/scenes/small_wet.toml" --runs "$work/e/runs.csv" --resamples 100 --out "$work/r" --no-png \
+      >"$work/out_r" 2>&1; rc_r=$?
+    [ "$rc_r" -eq "$rc" ] || { cat "$work/out_r" >&2; fail "--runs exit $rc_r, the runs themselves $rc"; }
+    grep -q 'none run' "$work/out_r" || fail "--runs did not say it ran nothing"
+    diff <(grep -v '^#' "$work/e/estimate_exponent.csv") <(grep -v '^#' "$work/r/estimate_exponent.csv") ||
+      fail "--runs does not give the same estimate as the runs"
+    diff <(grep -v '^#' "$work/e/runs.csv") <(grep -v '^#' "$work/r/runs.csv") || fail "runs.csv does not round-trip"
+    grep -v '^#' "$work/e/estimate_response.csv" | head -1 | grep -q ',seeds_split,standing,slumped_mean$' || fail "response table does not say which levels split"
     grep -v '^#' "$work/e/estimate_exponent.csv" | head -1 | grep -q ',split_levels,' || fail "estimates do not count the split levels they rest on"
     "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1
     grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
@@ -308,6 +319,16 @@ case $case_name in
     expect 2 '--seeds = 1.*2 to 64' -- "$demscale" estimate-exponent --seeds 1 --out "$work/e"
     expect 2 '--sf = 1.*> 1' -- "$demscale" estimate-exponent --sf 1 --out "$work/e"
     expect 2 '--resamples = 5' -- "$demscale" estimate-exponent --resamples 5 --out "$work/e"
+    expect 2 '--seed-base = -3' -- "$demscale" estimate-exponent --seed-base -3 --out "$work/e"
+    printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n1,0.07,1,0.5,1.2\n1,0.07,2,abc,1.2\n' >"$work/bad_runs.csv"
+    expect 2 'bad_runs.csv:3:4 \(slump_over_height\) = abc' -- "$demscale" estimate-exponent --runs "$work/bad_runs.csv" --out "$work/e"
+    printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n0.5,0.07,1,0.5,1.2\n' >"$work/bad_runs.csv"
+    expect 2 'bad_runs.csv:2:1 \(sf\) = 0.5.*>= 1' -- "$demscale" estimate-exponent --runs "$work/bad_runs.csv" --out "$work/e"
+    printf 'sf,gamma,seed,slump_over_height,spread_over_d0\n1,0.07,1,0.5,1.2\n' >"$work/bad_runs.csv"
+    expect 2 'neither gamma_n_per_m nor gamma_factor' -- "$demscale" estimate-exponent --runs "$work/bad_runs.csv" --out "$work/e"
+    printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n1,0.07,1,0.5,1.2\n1,0.07,1,0.4,1.2\n' >"$work/bad_runs.csv"
+    expect 2 'bad_runs.csv:3.*each run once' -- "$demscale" estimate-exponent --runs "$work/bad_runs.csv" --out "$work/e"
+    expect 2 'no_such.csv' -- "$demscale" estimate-exponent --runs "$work/no_such.csv" --out "$work/e"
     [ ! -e "$work/e" ] || fail "a refused estimate created output" ;;
   report_quick_structure)
     expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"
