@@ -16,9 +16,9 @@ namespace {
 struct Options {
     std::string scene = default_scene;
     std::string sfs = "1.4,1.96";
-    std::string range = "0.5,4";
-    int levels = 4, seeds = 8, resamples = 1000;
-    double offset = 2;
+    std::string range = "0.5,1.6";  // below the reference scene's stand/slump transition (docs/exponent-estimate.md, "The design")
+    int levels = 5, seeds = 4, resamples = 1000;
+    double offset = 1;
     std::string runs;  // a runs file to judge instead of running
     StudyRunOptions run;
 };

@@ -18,9 +18,9 @@ struct Options {
     bool quick = false, no_cache = false;
     int jobs = 0, threads = 0, seeds = 0;  // seeds 0: 8, or 3 with --quick
     bool estimate = false;                 // the measured-exponent section
-    std::string estimate_sf, estimate_range = "0.5,4";
-    int estimate_levels = 0;               // 0: 4, or 3 with --quick
-    int estimate_seeds = 0;                // 0: the report's --seeds
+    std::string estimate_sf, estimate_range = "0.5,1.6";
+    int estimate_levels = 0;               // 0: 5, or 3 with --quick
+    int estimate_seeds = 0;                // 0: 4, or the report's --seeds with --quick
     std::string baseline = "dry";
     SlurmOptions slurm;
 };
@@ -48,10 +48,10 @@ int run_report(const Options& o) {
     if (o.estimate) {
         slump::ResponsePlan e;
         e.scale_factors = parse_number_list(!o.estimate_sf.empty() ? o.estimate_sf : o.quick ? "1.4" : "1.4,1.96", "--estimate-sf", 0, 100);
-        e.factors = parse_factor_range(o.estimate_range, o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 4,
+        e.factors = parse_factor_range(o.estimate_range, o.estimate_levels > 0 ? o.estimate_levels : o.quick ? 3 : 5,
                                        "--estimate-range", "--estimate-levels");
         if (o.estimate_seeds < 0) throw InputError("--estimate-seeds", std::to_string(o.estimate_seeds), "2 to 64");
-        e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : r.seeds;
+        e.seeds = o.estimate_seeds > 0 ? o.estimate_seeds : o.quick ? r.seeds : 4;
         e.baseline = r.baseline;
         r.estimate = e;
     }
@@ -86,8 +86,8 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_flag("--estimate", o->estimate, "add the measured exponent: response curves and k-hat (costs the most; see estimate-exponent)");
     c->add_option("--estimate-sf", o->estimate_sf, "scale factors of the measured exponent (default 1.4,1.96; --quick: 1.4)");
     c->add_option("--estimate-range", o->estimate_range, "lowest and highest surface tension factor of its fine curve")->capture_default_str();
-    c->add_option("--estimate-levels", o->estimate_levels, "surface tension levels per curve, 3 to 12 (default 4; --quick: 3)");
-    c->add_option("--estimate-seeds", o->estimate_seeds, "runs per level of the measured exponent (default: --seeds)");
+    c->add_option("--estimate-levels", o->estimate_levels, "surface tension levels per curve, 3 to 12 (default 5; --quick: 3)");
+    c->add_option("--estimate-seeds", o->estimate_seeds, "runs per level of the measured exponent (default 4; --quick: --seeds)");
     return {{c, [o] { return run_report(*o); }}};
 }
 

@@ -250,7 +250,8 @@ std::string figure_script(const slump::ResponseStudy& study, const std::string& 
         s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"rms_sf" << format_short(sfs[i], 3)
           << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
     if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"rms_all\" with lines lw 3 lc rgb 'black' title 'all'";
-    s << "\nset title 'transition model: profile deviance against k'\nset ylabel '2 (ℓ(k̂) − ℓ(k))'\nset yrange [0:20]\nplot \\\n";
+    s << "\nset title 'transition model: profile deviance against k'\nset ylabel '2 (ℓ(k̂) − ℓ(k))'\nset yrange [0:20]\n"
+      << "set xrange [" << format_number(std::floor(2 * (k_hat - 1)) / 2) << ":" << format_number(std::ceil(2 * (k_hat + 1)) / 2) << "]\nplot \\\n";
     for (std::size_t i = 1; i < sfs.size(); ++i)
         s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"deviance_sf" << format_short(sfs[i], 3)
           << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
@@ -269,7 +270,7 @@ EstimateFiles write_estimate_files(const slump::ResponseStudy& study, const std:
         f.written.push_back(out_dir / name);
     };
     write("estimate_response.csv", io::render(response_table(study, scene_label), io::Format::csv));
-    write("runs.csv", io::render(slump::runs_table(slump::response_runs(study), scene_label), io::Format::csv));
+    write("estimate_runs.csv", io::render(slump::runs_table(slump::response_runs(study), scene_label), io::Format::csv));
     if (!study.wet) {
         write("estimate_dry_control.csv", io::render(dry_baseline_table(study, scene_label), io::Format::csv));
         return f;

@@ -1,5 +1,7 @@
 #include "report/slump_study_files.hpp"
 
+#include "slump/runs_file.hpp"
+
 #include <algorithm>
 #include <sstream>
 #include <tuple>
@@ -185,6 +187,9 @@ StudyFiles write_study_files(const slump::Study& study, const std::string& scene
     write(stem + ".csv", io::render(study_table(study, scene_label), io::Format::csv));
     const auto numbers = verdict_numbers(study, scene_label);
     write(stem + "_verdicts.csv", io::render(numbers, io::Format::csv));
+    std::vector<slump::RunRow> rows;
+    for (const auto* r : study.all_runs()) rows.push_back(slump::run_row(*r, study.reference.scene.bottom_diameter_m));
+    write(stem + "_runs.csv", io::render(slump::runs_table(rows, scene_label), io::Format::csv));
 
     io::Table profiles;
     profiles.title = "Final radial height profiles (" + scene_label + "); run: seedN for fine runs, sfS_kK for coarse ones";

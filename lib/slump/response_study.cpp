@@ -45,15 +45,7 @@ ResponseEnsemble ensemble(const SlumpScene& fine, double sf, double gamma, int s
 
 void measure(ResponseEnsemble& e, double bottom_diameter) {
     e.measured.clear();
-    for (const auto& r : e.runs) {
-        RunRow m;
-        m.sf = e.sf, m.gamma = e.gamma, m.seed = static_cast<long>(r.scene.seed), m.unusable = r.unusable;
-        if (m.unusable.empty()) {
-            m.slump_over_height = slump_over_height(r.result), m.spread_over_d0 = r.result.final.spread / bottom_diameter;
-            m.at_rest = r.result.came_to_rest;
-        }
-        e.measured.push_back(m);
-    }
+    for (const auto& r : e.runs) e.measured.push_back(run_row(r, bottom_diameter));
 }
 
 void summarize_ensemble(ResponseEnsemble& e) {

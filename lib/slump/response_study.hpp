@@ -26,9 +26,9 @@ namespace demscale::slump {
 struct ResponsePlan {
     SlumpScene fine;
     std::vector<double> scale_factors = {1.40, 1.96};
-    std::vector<double> factors = {0.5, 1, 2, 4};  // of the scene's γ, ascending (dry: ignored)
-    double offset_exponent = 2;  // coarse levels at f·γ·S_f^offset
-    int seeds = 8;
+    std::vector<double> factors = {0.5, 0.669, 0.894, 1.196, 1.6};  // of the scene's γ, ascending (dry: ignored)
+    double offset_exponent = 1;  // coarse levels at f·γ·S_f^offset
+    int seeds = 4;
     Baseline baseline = Baseline::dry;  // wet scenes: the dry control beside the levels
     BatchOptions batch;
     stats::ShiftSearch search;           // the means shift (comparison)

@@ -7,8 +7,20 @@
 #include "core/input_error.hpp"
 #include "io/csv_reader.hpp"
 #include "io/input_file.hpp"
+#include "slump/ensemble_verdict.hpp"
 
 namespace demscale::slump {
+
+RunRow run_row(const StudyRun& run, double bottom_diameter) {
+    RunRow m;
+    m.sf = run.grain.sf, m.gamma = run.scene.wet ? run.scene.liquid.surface_tension_n_per_m : 0.0;
+    m.seed = static_cast<long>(run.scene.seed), m.unusable = run.unusable;
+    if (m.unusable.empty()) {
+        m.slump_over_height = slump_over_height(run.result), m.spread_over_d0 = run.result.final.spread / bottom_diameter;
+        m.at_rest = run.result.came_to_rest;
+    }
+    return m;
+}
 
 io::Table runs_table(const std::vector<RunRow>& rows, const std::string& scene_label) {
     io::Table t;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/table_format.hpp"
+#include "slump/run_batch.hpp"
 
 namespace demscale::slump {
 
@@ -24,6 +25,10 @@ struct RunRow {
     bool at_rest = true;
     std::string unusable;  // non-empty: no measures
 };
+
+// A run's row: its S_f, its own surface tension (0 without liquid), seed and measures; bottom_diameter
+// of the cone, m (the spread's scale).
+RunRow run_row(const StudyRun& run, double bottom_diameter);
 
 io::Table runs_table(const std::vector<RunRow>& rows, const std::string& scene_label);
 

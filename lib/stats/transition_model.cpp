@@ -32,6 +32,7 @@ double mills(double z) { return std::exp(-0.5 * z * z - 0.5 * std::log(2 * M_PI)
 struct WetRun {
     double x, log_sf, y;
     bool stands;
+    bool on_branch;     // slumped, at a level where no run stood: a point of the continuous part
     std::size_t curve;  // 0 fine, then the chosen coarse curves
 };
 
@@ -41,7 +42,7 @@ struct Data {
     bool controls = false;
     int degree = 1;        // of the slumped branch
     double centre = 0;     // ū
-    std::size_t standing = 0, slumped = 0;
+    std::size_t standing = 0, slumped = 0, on_branch = 0;
     double standing_slump = 0;
     bool quantal() const { return standing > 0 && slumped > 0; }
 };
@@ -53,15 +54,16 @@ Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSet
     std::size_t fine_n = 0;
     for (std::size_t c = 0; c < curves.size(); ++c)
         for (const auto& l : curves[c]->levels) {
-            bool any = false;
+            const bool pure = std::none_of(l.y.begin(), l.y.end(), [&](double y) { return y < s.stands_below; });
             for (double y : l.y) {
                 const bool stands = y < s.stands_below;
-                d.wet.push_back({l.x, std::log(curves[c]->sf), y, stands, c});
+                d.wet.push_back({l.x, std::log(curves[c]->sf), y, stands, pure, c});
                 if (stands) d.standing++, d.standing_slump += y;
-                else d.slumped++, any = true;
-                if (!stands && c == 0) fine_x += l.x, fine_n++;
+                else d.slumped++;
+                if (pure) d.on_branch++;
+                if (pure && c == 0) fine_x += l.x, fine_n++;
             }
-            fine_slumped_levels += any && c == 0;
+            fine_slumped_levels += pure && c == 0;
         }
     if (d.standing > 0) d.standing_slump /= static_cast<double>(d.standing);
     d.centre = fine_n > 0 ? fine_x / static_cast<double>(fine_n) : 0.0;
@@ -138,14 +140,14 @@ struct Branch {
 
 Branch fit_branch(const Data& d, double k) {
     const int nb = d.degree + 1, nd = d.controls ? static_cast<int>(d.control.size()) : 0;
-    std::size_t rows = d.slumped;
+    std::size_t rows = d.on_branch;
     for (const auto& c : d.control) rows += d.controls ? c.size() : 0;
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), nb + nd);
     Eigen::VectorXd y(static_cast<Eigen::Index>(rows));
     std::vector<bool> dry(rows, false);
     Eigen::Index i = 0;
     for (const auto& r : d.wet) {
-        if (r.stands) continue;
+        if (!r.on_branch) continue;
         const double v = r.x - k * r.log_sf - d.centre;
         for (int j = 0; j < nb; ++j) A(i, j) = std::pow(v, j);
         if (nd > 0 && r.curve > 0) A(i, nb + static_cast<int>(r.curve)) = 1, A(i, nb) = -1;
@@ -186,7 +188,7 @@ struct AtK {
 AtK evaluate(const Data& d, double k, const TransitionSettings& s, Probit warm) {
     AtK r{0, warm, {}};
     if (d.quantal()) r.loglik += fit_probit(d, k, 1 / s.min_width, r.probit);
-    if (d.slumped > 0) {
+    if (d.on_branch > 0) {
         r.branch = fit_branch(d, k);
         r.loglik += r.branch.loglik;
     }
@@ -230,7 +232,7 @@ TransitionFit fit_set(const std::vector<const ResponseCurve*>& curves, double sf
     if (ll_hat < ll[best]) k_hat = f.profile_k[best], ll_hat = ll[best];
     for (double v : ll) f.profile_deviance.push_back(std::max(0.0, 2 * (ll_hat - v)));
     const std::size_t wet_params = static_cast<std::size_t>(d.degree + 2) + (d.controls ? curves.size() - 1 : 0);
-    f.cutoff = deviance_cutoff(d.slumped, wet_params);
+    f.cutoff = deviance_cutoff(d.on_branch, wet_params);
     // The interval: from k̂ outward to the first grid point beyond χ²₁, then bisection (the part of
     // {k : deviance ≤ χ²₁} that holds k̂).
     auto crossing = [&](int dir) -> double {
@@ -253,7 +255,8 @@ TransitionFit fit_set(const std::vector<const ResponseCurve*>& curves, double sf
     const AtK at = evaluate(d, k_hat, s, probits[best]);
     if (d.quantal() && at.probit.b > 0) f.threshold = -at.probit.a / at.probit.b, f.width = 1 / at.probit.b;
     else f.threshold = NAN, f.width = NAN;
-    if (d.slumped > 0) {
+    f.on_branch = d.on_branch;
+    if (d.on_branch > 0) {
         for (int j = 0; j <= d.degree; ++j) f.branch.push_back(at.branch.p(j));
         f.sigma = at.branch.sigma;
         for (std::size_t j = 1; j < curves.size(); ++j)

@@ -6,7 +6,10 @@
 //  quantal    — a run stands when its slump is below `stands_below` of the fill height;
 //               P(stand) = Φ((u − θ) / w), a probit in u with one threshold θ and one width w for
 //               every curve (the coarse threshold is the fine one moved by k ln S_f);
-//  continuous — the slump of the runs that slumped: y = β₀ + β₁ v + β₂ v² + b_S, v = u − ū,
+//  continuous — the slump of the runs at levels where none stood (the slumped branch; a column that
+//               just fails where others stand slumps differently: on the reference scene the fine
+//               runs that slumped at 2γ, where half stood, slumped 0.535 of the height, more than
+//               at γ): y = β₀ + β₁ v + β₂ v² + b_S, v = u − ū,
 //               residual sd σ (β₂ with three or more fine levels that hold slumped runs, β₁ with two); b_S is the
 //               dry offset of S_f, b_S = d_S − d₁, where the dry controls enter as y = d_S with their
 //               own sd σ_dry (no control: b_S = 0).
@@ -29,7 +32,7 @@ namespace demscale::stats {
 struct TransitionSettings {
     double stands_below = 0.3;  // slump / fill height below which a column counts as standing
     double k_min = -2, k_max = 6;
-    double min_width = 0.02;    // of the probit in ln γ
+    double min_width = 0.1;     // of the probit in ln γ
 };
 
 struct TransitionFit {
@@ -46,6 +49,7 @@ struct TransitionFit {
     std::vector<double> offsets; // b_S at k̂ per coarse curve, in their order (0 without controls)
     double standing_slump = 0;   // mean slump of the standing runs, of the fill height
     std::size_t standing = 0, slumped = 0;  // runs of each kind it rests on
+    std::size_t on_branch = 0;               // slumped runs at levels where none stood (the continuous part)
     bool quantal = false;      // the quantal part took part (runs of both kinds)
     std::vector<double> profile_k, profile_deviance;  // 2 (ℓ(k̂) − ℓ(k)) on the search grid
 };

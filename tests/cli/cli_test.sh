@@ -260,9 +260,10 @@ case $case_name in
     grep -q 'the raw comparison' "$work/out" || fail "--baseline none does not say the raw comparison decides"
     expect 2 '--baseline = wet' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --baseline wet
     expect 1 '"verdict": "FAIL"' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-profile 1e-6 --format json
-    for f in check_k1.csv check_k1_verdicts.csv check_k1_profiles.csv check_k1_profiles.gp check_k1_error_vs_k.gp; do
+    for f in check_k1.csv check_k1_verdicts.csv check_k1_runs.csv check_k1_profiles.csv check_k1_profiles.gp check_k1_error_vs_k.gp; do
       [ -s "$work/c/$f" ] || fail "$f missing"
     done
+    [ "$(grep -c '^1\(\.4\)\?,' "$work/c/check_k1_runs.csv")" -eq 12 ] || fail "check_k1_runs.csv does not hold the 12 runs (3 seeds, fine and coarse, wet and dry)"
     grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts" ;;
   check_exponent_bad_input_exit_2)
     expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
@@ -296,14 +297,14 @@ case $case_name in
     grep -q '^1.4,transition model,raw,' "$work/e/estimate_exponent.csv" || fail "no raw estimate beside it"
     grep -q '^1.4,means shift,baseline-corrected,' "$work/e/estimate_exponent.csv" || fail "no means shift beside the model"
     # The study's runs, one row per run (6 fine, 6 coarse, 4 dry), read back: the same estimate to the bit.
-    [ "$(grep -c '^1\(\.4\)\?,' "$work/e/runs.csv")" -eq 16 ] || fail "runs.csv does not hold the 16 runs"
-    "$demscale" estimate-exponent --scene "$src/data/scenes/small_wet.toml" --runs "$work/e/runs.csv" --resamples 100 --out "$work/r" --no-png \
+    [ "$(grep -c '^1\(\.4\)\?,' "$work/e/estimate_runs.csv")" -eq 16 ] || fail "estimate_runs.csv does not hold the 16 runs"
+    "$demscale" estimate-exponent --scene "$src/data/scenes/small_wet.toml" --runs "$work/e/estimate_runs.csv" --resamples 100 --out "$work/r" --no-png \
       >"$work/out_r" 2>&1; rc_r=$?
     [ "$rc_r" -eq "$rc" ] || { cat "$work/out_r" >&2; fail "--runs exit $rc_r, the runs themselves $rc"; }
     grep -q 'none run' "$work/out_r" || fail "--runs did not say it ran nothing"
     diff <(grep -v '^#' "$work/e/estimate_exponent.csv") <(grep -v '^#' "$work/r/estimate_exponent.csv") ||
       fail "--runs does not give the same estimate as the runs"
-    diff <(grep -v '^#' "$work/e/runs.csv") <(grep -v '^#' "$work/r/runs.csv") || fail "runs.csv does not round-trip"
+    diff <(grep -v '^#' "$work/e/estimate_runs.csv") <(grep -v '^#' "$work/r/estimate_runs.csv") || fail "estimate_runs.csv does not round-trip"
     grep -v '^#' "$work/e/estimate_response.csv" | head -1 | grep -q ',seeds_split,standing,slumped_mean$' || fail "response table does not say which levels split"
     grep -v '^#' "$work/e/estimate_exponent.csv" | head -1 | grep -q ',split_levels,' || fail "estimates do not count the split levels they rest on"
     "$demscale" estimate-exponent "${small[@]}" >"$work/out" 2>&1

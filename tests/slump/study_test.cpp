@@ -445,6 +445,7 @@ TEST_CASE("Response curves: levels a factor apart exactly, coarse gamma-bar = f 
     plan.fine = kantro();
     plan.scale_factors = {1.4, 1.96};
     plan.factors = f;
+    plan.offset_exponent = 2;
     plan.seeds = 3;
     const auto study = plan_response_runs(plan);
     const double gamma = plan.fine.liquid.surface_tension_n_per_m, r = plan.fine.radius_m;
