@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.hpp"
+#include "stats/shape_distance.hpp"
 
 namespace demscale::slump {
 
@@ -17,41 +18,6 @@ std::vector<double> values(const std::vector<const SlumpResult*>& runs, double (
     return v;
 }
 double spread(const SlumpResult& r) { return r.final.spread; }
-
-std::vector<double> mean_shape(const std::vector<std::vector<double>>& shapes, const std::vector<std::size_t>& pick) {
-    std::vector<double> m(shapes.front().size(), 0.0);
-    for (std::size_t i : pick)
-        for (std::size_t j = 0; j < m.size(); ++j) m[j] += shapes[i][j] / static_cast<double>(pick.size());
-    return m;
-}
-
-// The shapes a profile distance compares, one per seed: coarse and fine (wet minus dry with a
-// control), and the fine wet shapes whose mean is the norm.
-struct Shapes {
-    std::vector<std::vector<double>> coarse, fine, norm;
-    double distance(const std::vector<std::size_t>& ci, const std::vector<std::size_t>& fi) const {
-        const auto c = mean_shape(coarse, ci), f = mean_shape(fine, fi), n = mean_shape(norm, fi);
-        double d2 = 0, n2 = 0;
-        for (std::size_t j = 0; j < c.size(); ++j) d2 += (c[j] - f[j]) * (c[j] - f[j]), n2 += n[j] * n[j];
-        return n2 > 0 ? std::sqrt(d2 / n2) : 0.0;
-    }
-};
-
-// Percentile bootstrap of the profile distance over the seeds of both sides.
-stats::Interval bootstrap_profile(const Shapes& s) {
-    std::mt19937_64 rng(20261201);
-    std::uniform_int_distribution<std::size_t> pick_f(0, s.fine.size() - 1), pick_c(0, s.coarse.size() - 1);
-    constexpr int resamples = 2000;
-    std::vector<double> d;
-    std::vector<std::size_t> fi(s.fine.size()), ci(s.coarse.size());
-    for (int b = 0; b < resamples; ++b) {
-        for (auto& i : fi) i = pick_f(rng);
-        for (auto& i : ci) i = pick_c(rng);
-        d.push_back(s.distance(ci, fi));
-    }
-    std::sort(d.begin(), d.end());
-    return {d[static_cast<std::size_t>(0.025 * (resamples - 1))], d[static_cast<std::size_t>(0.975 * (resamples - 1))]};
-}
 
 std::vector<std::size_t> all_of(std::size_t n) {
     std::vector<std::size_t> v(n);
@@ -137,9 +103,11 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
         }
         return s;
     };
-    const Shapes shapes{shapes_of(coarse, dry_coarse), shapes_of(fine, dry_fine), shapes_of(fine, nullptr)};
-    const double distance = shapes.distance(all_of(coarse.size()), all_of(fine.size()));
-    auto profile = criterion("profile", distance, too_few ? stats::Interval{distance, distance} : bootstrap_profile(shapes), tol.profile);
+    const stats::ShapeEnsembles shapes{shapes_of(coarse, dry_coarse), shapes_of(fine, dry_fine), shapes_of(fine, nullptr)};
+    // With one seed on a side there is no noise to remove: the plain distance, INCONCLUSIVE anyway.
+    const double plain = stats::shape_distance_of(shapes, all_of(coarse.size()), all_of(fine.size()), false);
+    const auto distance = too_few ? stats::ShapeDistance{plain, plain, {plain, plain}} : stats::measure_shape_distance(shapes);
+    auto profile = criterion("profile", distance.distance, distance.ci, tol.profile);
 
     v.criteria = {slump, spread, profile};
     v.overall = stats::combine({slump.verdict, spread.verdict, profile.verdict});

@@ -4,8 +4,9 @@
 //  spread  — Welch t interval of mean(d̄) − mean(d) (diameter at half height), over the fine mean, tolerance relative;
 //  profile — bootstrap percentile interval (2 000 resamples of both ensembles' seeds, a fixed
 //            generator seed so that a verdict repeats) of the distance between the two ensembles'
-//            mean shapes (slump/comparison.hpp), tolerance relative; the distance is ≥ 0, so it
-//            passes when the interval's top lies below the tolerance.
+//            mean shapes (slump/comparison.hpp) with the part seed noise alone gives removed
+//            (stats/shape_distance.hpp), tolerance relative; the distance is ≥ 0, so it passes
+//            when the interval's top lies below the tolerance.
 // Against a dry control (the same seeds of both scenes without their liquid), the same tests judge
 // the difference after the geometry's offset is removed, seed by seed: for slump and spread the
 // wet-minus-dry value of each seed, coarse against fine (Welch t); for the profile the distance
