@@ -45,34 +45,6 @@ std::string sf_name(double sf) { return sf == 0 ? "all S_f" : "S_f = " + format_
 
 std::string interval_text(const stats::Interval& i) { return "[" + format_short(i.low, 3) + ", " + format_short(i.high, 3) + "]"; }
 
-// Which of the similarity groups' exponents an interval holds.
-std::string groups_inside(const stats::Interval& ci) {
-    std::string in, out;
-    for (double k : {1.0, 2.0, 3.0}) {
-        std::string& list = ci.contains(k) ? in : out;
-        list += (list.empty() ? "" : ", ") + format_short(k);
-    }
-    return "inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
-}
-
-// "S_f = 1.4: k-hat = 0.93 [0.81, 1.07] (3 standing, 45 slumped runs); inside ...; passes ±5 % for k 0.6 to 1.3"
-std::string model_summary(const stats::TransitionFit& f, const stats::PassingRange* pass, double tolerance) {
-    std::string s = sf_name(f.sf) + ": k-hat = " + format_short(f.k, 3) + " " + interval_text(f.ci) + " (" + std::to_string(f.standing) +
-                    " standing, " + std::to_string(f.slumped) + " slumped runs)";
-    if (!f.determined)
-        return s + " UNDETERMINED (the likelihood does not close inside k = -2 to 6: the coarse levels do not overlap the fine "
-                   "curve where it changes; move --range or --offset)";
-    s += "; " + groups_inside(f.ci);
-    if (pass) {
-        auto end = [](double k, bool open, const char* sign) { return std::string(open ? sign : "") + format_short(k, 3); };
-        s += "; slump within ±" + format_short(100 * tolerance, 3) + " % of the fill height for k " +
-             (pass->empty() ? std::string("- none for every k in the interval (it is wider than the band)")
-                            : end(pass->over_interval.low, pass->low_open, "<=") + " to " + end(pass->over_interval.high, pass->high_open, ">=")) +
-             " (at k-hat exactly: " + end(pass->at_k_hat.low, pass->low_open, "<=") + " to " + end(pass->at_k_hat.high, pass->high_open, ">=") + ")";
-    }
-    return s;
-}
-
 std::string shift_summary(const stats::ExponentEstimate& e) {
     std::string s = sf_name(e.sf) + ": k-hat = " + format_short(e.k, 3) + " " + interval_text(e.ci);
     if (!e.determined) return s + " undetermined";
@@ -102,10 +74,10 @@ int run_estimate(const Options& o) {
         if (study.wet) {
             std::cout << "transition model (decides; docs/exponent-estimate.md)" << (study.has_control() ? ", baseline-corrected (the dry control's offset, same seeds)" : "") << ":\n";
             for (std::size_t i = 0; i < study.fits.size(); ++i)
-                std::cout << "  " << model_summary(study.fits[i], &study.passing[i], plan.fine.tolerances.slump) << "\n";
+                std::cout << "  " << report::describe_fit(study.fits[i], &study.passing[i], plan.fine.tolerances.slump) << "\n";
             if (study.has_control()) {
                 std::cout << "  raw, for comparison (the dry offset read as a shift in k):\n";
-                for (const auto& f : study.raw_fits) std::cout << "    " << model_summary(f, nullptr, 0) << "\n";
+                for (const auto& f : study.raw_fits) std::cout << "    " << report::describe_fit(f, nullptr, 0) << "\n";
             }
             std::cout << "means shift with its seed bootstrap (for comparison; it undercovers where levels split):\n";
             for (const auto& e : study.estimates) std::cout << "  " << shift_summary(e) << "\n";

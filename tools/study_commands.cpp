@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_common.hpp"
+#include "report/exponent_estimate_files.hpp"
 #include "core/input_error.hpp"
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
@@ -25,6 +26,7 @@ struct Options {
     std::vector<std::string> scaled;
     std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
     int seeds = 8;
+    bool k_range = false;
     StudyRunOptions run;
 };
 
@@ -119,6 +121,31 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
     return overall == stats::Verdict::pass ? 0 : overall == stats::Verdict::fail ? 1 : 4;
 }
 
+// --k-range: estimate-exponent's response curves (its default design) beside the verdicts, and from
+// them k-hat and the range of k whose slump passes, per judged S_f and jointly.
+void print_k_range(const Options& o, const slump::StudyPlan& plan, const slump::Study& study) {
+    if (!plan.fine.wet || study.judged_scale_factors().empty()) {
+        std::cout << "range of k: none to measure (" << (plan.fine.wet ? "no S_f could be judged" : "a dry scene has no cohesion to vary") << ")\n";
+        return;
+    }
+    slump::ResponsePlan rp;
+    rp.fine = plan.fine;
+    rp.fine.tolerances = plan.tolerances;
+    rp.scale_factors = study.judged_scale_factors();
+    rp.baseline = plan.baseline;
+    rp.batch.jobs = plan.jobs, rp.batch.threads_per_job = plan.threads_per_job, rp.batch.force_dt = plan.force_dt;
+    rp.batch.cache_dir = plan.cache_dir, rp.batch.slurm = plan.slurm;
+    const auto out = progress_output("k-range");
+    rp.batch.live = out.live;
+    const auto est = slump::run_response_study(rp, out.log);
+    const auto files = report::write_estimate_files(est, display_path(o.scene), o.run.out_dir, !o.run.no_png);
+    std::cout << "\nk-hat and the range of k that passes the slump tolerance (transition model on estimate-exponent's response curves, "
+              << est.fits.size() << (est.fits.size() == 1 ? " fit" : " fits") << "; docs/exponent-estimate.md):\n";
+    for (std::size_t i = 0; i < est.fits.size(); ++i)
+        std::cout << "  " << report::describe_fit(est.fits[i], &est.passing[i], plan.tolerances.slump) << "\n";
+    for (const auto& f : files.written) std::cerr << "wrote " << f.string() << "\n";
+}
+
 void add_common(CLI::App* c, Options& o) {
     c->add_option("--scene", o.scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     c->add_option("--sf", o.sfs,
@@ -129,6 +156,9 @@ void add_common(CLI::App* c, Options& o) {
     c->add_option("--tol-spread", o.tol_spread, "relative spread tolerance (diameter at half height) (default: the scene's [check])");
     c->add_option("--tol-profile", o.tol_profile, "profile tolerance, relative L2 shape distance (default: the scene's [check])");
     c->add_option("--seeds", o.seeds, "runs per ensemble: the fine one and each (S_f, k)")->capture_default_str();
+    c->add_flag("--k-range", o.k_range,
+                "also run estimate-exponent's response curves (its default design, cached and shared) and print k-hat with its interval "
+                "and the range of k that passes, per S_f and jointly");
     add_study_run_options(c, o.run, "the table and figures");
 }
 
@@ -152,12 +182,16 @@ std::vector<Command> study_commands(CLI::App& app) {
                  const auto plan = plan_from(*check, "--exponent");
                  if (plan.exponents.size() != 1) throw InputError("--exponent", check->exponents, "one number (use sweep for several)");
                  const auto study = run(plan);
-                 return report(*check, plan, study, "check_k" + format_short(plan.exponents.front()), true);
+                 const int code = report(*check, plan, study, "check_k" + format_short(plan.exponents.front()), true);
+                 if (check->k_range) print_k_range(*check, plan, study);
+                 return code;
              }},
             {s, [sweep] {
                  const auto plan = plan_from(*sweep, "--exponents");
                  const auto study = run(plan);
-                 return report(*sweep, plan, study, "sweep", false);
+                 const int code = report(*sweep, plan, study, "sweep", false);
+                 if (sweep->k_range) print_k_range(*sweep, plan, study);
+                 return code;
              }}};
 }
 

@@ -43,6 +43,37 @@ std::vector<stats::ResponseCurve> curves_of(const slump::ResponseStudy& s, const
 
 }  // namespace
 
+namespace {
+
+// Which of the similarity groups' exponents an interval holds.
+std::string groups_inside(const stats::Interval& ci) {
+    std::string in, out;
+    for (double k : {1.0, 2.0, 3.0}) {
+        std::string& list = ci.contains(k) ? in : out;
+        list += (list.empty() ? "" : ", ") + format_short(k);
+    }
+    return "inside the interval: k = " + (in.empty() ? "none" : in) + "; outside: k = " + (out.empty() ? "none" : out);
+}
+
+}  // namespace
+
+std::string describe_fit(const stats::TransitionFit& f, const stats::PassingRange* pass, double tolerance) {
+    std::string s = std::string(f.sf == 0 ? "all S_f" : "S_f = " + format_short(f.sf, 3)) + ": k-hat = " + format_short(f.k, 3) + " [" + format_short(f.ci.low, 3) + ", " + format_short(f.ci.high, 3) + "]" + " (" + std::to_string(f.standing) +
+                    " standing, " + std::to_string(f.slumped) + " slumped runs)";
+    if (!f.determined)
+        return s + " UNDETERMINED (the likelihood does not close inside k = -2 to 6: the coarse levels do not overlap the fine "
+                   "curve where it changes; move --range or --offset)";
+    s += "; " + groups_inside(f.ci);
+    if (pass) {
+        auto end = [](double k, bool open, const char* sign) { return std::string(open ? sign : "") + format_short(k, 3); };
+        s += "; slump within ±" + format_short(100 * tolerance, 3) + " % of the fill height for k " +
+             (pass->empty() ? std::string("- none for every k in the interval (it is wider than the band)")
+                            : end(pass->over_interval.low, pass->low_open, "<=") + " to " + end(pass->over_interval.high, pass->high_open, ">=")) +
+             " (at k-hat exactly: " + end(pass->at_k_hat.low, pass->low_open, "<=") + " to " + end(pass->at_k_hat.high, pass->high_open, ">=") + ")";
+    }
+    return s;
+}
+
 io::Table response_table(const slump::ResponseStudy& study, const std::string& scene_label) {
     io::Table t;
     t.title = "Response of the slump test to surface tension, per scale factor (" + scene_label + ")";

@@ -13,6 +13,10 @@
 
 namespace demscale::report {
 
+// One line on a transition-model fit: k̂ with its interval and the runs it rests on, the similarity
+// groups inside, and (with pass) the range of k whose slump stays within ±tolerance (of the fill height).
+std::string describe_fit(const stats::TransitionFit& fit, const stats::PassingRange* pass, double tolerance);
+
 io::Table response_table(const slump::ResponseStudy& study, const std::string& scene_label);
 io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::string& scene_label);
 io::Table dry_baseline_table(const slump::ResponseStudy& study, const std::string& scene_label);

@@ -264,6 +264,11 @@ case $case_name in
       [ -s "$work/c/$f" ] || fail "$f missing"
     done
     [ "$(grep -c '^1\(\.4\)\?,' "$work/c/check_k1_runs.csv")" -eq 12 ] || fail "check_k1_runs.csv does not hold the 12 runs (3 seeds, fine and coarse, wet and dry)"
+    # --k-range: the response curves beside the verdict, and the range of k that passes.
+    "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --k-range >"$work/out" 2>&1
+    grep -q '^  S_f = 1.4: k-hat = .*\[' "$work/out" || { cat "$work/out" >&2; fail "--k-range printed no k-hat"; }
+    grep -q 'range of k that passes' "$work/out" || fail "--k-range did not say what it prints"
+    [ -s "$work/c/estimate_exponent.csv" ] || fail "--k-range wrote no estimate"
     grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts" ;;
   check_exponent_bad_input_exit_2)
     expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
