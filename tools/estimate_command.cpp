@@ -18,6 +18,7 @@ struct Options {
     std::string sfs = "1.4,1.96";
     std::string range = "0.5,1.6";  // below the reference scene's stand/slump transition (docs/exponent-estimate.md, "The design")
     int levels = 5, seeds = 4, resamples = 1000;
+    double stands_below = stats::TransitionSettings{}.stands_below;
     double offset = 1;
     std::string runs;  // a runs file to judge instead of running
     StudyRunOptions run;
@@ -34,6 +35,8 @@ slump::ResponsePlan plan_from(const Options& o) {
     plan.baseline = parse_baseline(o.run.baseline);
     if (o.resamples < 100 || o.resamples > 100000) throw InputError("--resamples", std::to_string(o.resamples), "100 to 100000");
     plan.search.resamples = o.resamples;
+    if (!(o.stands_below > 0 && o.stands_below < 1)) throw InputError("--stands-below", format_number(o.stands_below), "between 0 and 1 (a share of the fill height)");
+    plan.transition.stands_below = o.stands_below;
     const auto b = batch_settings(o.run);
     plan.batch.jobs = b.jobs, plan.batch.threads_per_job = b.threads_per_job, plan.batch.force_dt = b.force_dt;
     if (b.cache_dir) plan.batch.cache_dir = *b.cache_dir;
@@ -100,7 +103,9 @@ std::vector<Command> estimate_commands(CLI::App& app) {
     c->add_option("--range", o->range, "lowest and highest surface tension factor of the fine curve, log-spaced")->capture_default_str();
     c->add_option("--offset", o->offset, "coarse levels at factor x gamma x S_f^offset")->capture_default_str();
     c->add_option("--seeds", o->seeds, "runs per level, 2 to 64")->capture_default_str();
-    c->add_option("--resamples", o->resamples, "bootstrap resamples for the interval")->capture_default_str();
+    c->add_option("--resamples", o->resamples, "bootstrap resamples for the means shift's interval")->capture_default_str();
+    c->add_option("--stands-below", o->stands_below, "a column whose slump over fill height is below this stood (transition model)")
+        ->capture_default_str();
     c->add_option("--runs", o->runs,
                   "judge the runs in this CSV (docs/file-formats.md, runs file: e.g. another engine's, or runs.csv of an earlier study) "
                   "instead of running; --scene gives the surface tension and the tolerance");
