@@ -22,6 +22,7 @@ struct Options {
     int estimate_levels = 0;               // 0: 5, or 3 with --quick
     int estimate_seeds = 0;                // 0: 4, or the report's --seeds with --quick
     std::string baseline = "dry";
+    long seed_base = 0;
     SlurmOptions slurm;
 };
 
@@ -44,6 +45,9 @@ int run_report(const Options& o) {
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");
     r.seeds = o.seeds > 0 ? o.seeds : o.quick ? 3 : 8;
     r.baseline = parse_baseline(o.baseline);
+    slump::SlumpScene seeded;
+    apply_seed_base(seeded, o.seed_base);  // validates it
+    r.seed_base = o.seed_base > 0 ? seeded.seed : 0;
     r.git_revision = demscale::git_revision;  // the build's, refreshed at every build
     if (o.estimate) {
         slump::ResponsePlan e;
@@ -79,6 +83,7 @@ std::vector<Command> report_commands(CLI::App& app) {
     c->add_flag("--no-cache", o->no_cache, "run every slump; read and write no cache");
     c->add_option("--seeds", o->seeds, "runs per ensemble, fine and each (S_f, k) (default 8; --quick: 3)");
     c->add_option("--jobs", o->jobs, "slump runs side by side (default: one per core)");
+    c->add_option("--seed-base", o->seed_base, "first seed of every ensemble (default: the scene's `seed`); another base draws new piles");
     c->add_option("--baseline", o->baseline, "dry: the dry control of the same seeds decides the verdicts and k-hat; none: raw")
         ->capture_default_str();
     c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");

@@ -137,7 +137,8 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     };
     const io::TableConfig& config = o.similarity;
     const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
-    const auto scene = slump::load_slump_scene(o.scene_path);
+    auto scene = slump::load_slump_scene(o.scene_path);
+    if (o.seed_base > 0) scene.seed = o.seed_base;
     slump::StudyPlan plan;
     plan.fine = scene;
     plan.exponents = ks;

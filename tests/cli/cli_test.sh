@@ -281,6 +281,7 @@ case $case_name in
     printf '[check]\nslump_tolerance = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: check.slump_tolerance = -1' -- "$demscale" report --quick --scene "$work/bad.toml" --out "$work/c"
     expect 2 '--sf = 20.*top opening' -- "$demscale" report --quick --sf 20 --out "$work/c"
+    expect 2 '--seed-base = -3' -- "$demscale" report --quick --seed-base -3 --out "$work/c"
     [ ! -e "$work/c" ] || fail "a refused study or report created output" ;;
   estimate_exponent_small)
     small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --seeds 2 --levels 3 --resamples 100 --cache "$work/cache" --out "$work/e")
