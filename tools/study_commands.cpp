@@ -109,6 +109,10 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
             if (!v.unusable.empty())
                 std::cout << "S_f = " << format_short(v.sf) << ", k = " << format_short(v.exponent) << ": UNUSABLE FILL, not judged ("
                           << v.unusable << "); it does not enter the verdict\n";
+        if (n[2] > 0 && overall != stats::Verdict::fail)
+            std::cout << "no FAIL holds for the family: " << n[2] << (n[2] == 1 ? " ensemble FAILs" : " ensembles FAIL")
+                      << " on its own, but no criterion's interval stays outside its tolerance at 5 % / " << study.family_size()
+                      << " (Holm, the " << study.family_size() << " criteria x S_f judged; docs/verdicts.md)\n";
         if (study.judged_scale_factors().empty())
             std::cout << "INCONCLUSIVE: no S_f could be judged in this scene's cone (a finer scene, lower [check] limits, or fills "
                          "the cone can hold)\n";

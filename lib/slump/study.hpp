@@ -60,9 +60,11 @@ struct Study {
     bool has_control() const { return !dry_fine.empty(); }
     // The verdicts that decide: baseline-corrected with a dry control, else raw.
     const std::vector<EnsembleVerdict>& deciding() const { return has_control() ? corrected : verdicts; }
-    // Over the deciding verdicts (geometry-limited S_f have none): FAIL if any fails, else
-    // INCONCLUSIVE if any is, else PASS; INCONCLUSIVE when no S_f could be judged.
+    // Over the deciding verdicts (geometry-limited S_f have none): PASS if every criterion passes
+    // (an intersection-union test: no correction); FAIL if some criterion fails at the family's
+    // level (stats::fails_in_family, m = family_size()); else INCONCLUSIVE, as when no S_f could be judged.
     stats::Verdict overall() const;
+    std::size_t family_size() const;  // the criteria of every judged ensemble that decides
     std::vector<double> judged_scale_factors() const;  // the S_f with verdicts, in the plan's order
     std::vector<const SlumpResult*> fine_ensemble() const;
     std::vector<const StudyRun*> coarse_runs(std::size_t run) const;         // runs[run] and its other seeds

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <gsl/gsl_cdf.h>
 
 namespace demscale::stats {
 
@@ -26,6 +27,12 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
     Verdict worst = Verdict::pass;
     for (auto v : verdicts) worst = std::max(worst, v);  // pass < inconclusive < fail
     return worst;
+}
+
+bool fails_in_family(double estimate, const Interval& ci, double tolerance, std::size_t m) {
+    const double r = m <= 1 ? 1.0 : gsl_cdf_ugaussian_Pinv(1 - 0.025 / static_cast<double>(m)) / gsl_cdf_ugaussian_Pinv(0.975);
+    const Interval wide{estimate - (estimate - ci.low) * r, estimate + (ci.high - estimate) * r};
+    return equivalence_verdict(wide, tolerance) == Verdict::fail;
 }
 
 }  // namespace demscale::stats

@@ -27,4 +27,10 @@ double smallest_confirmable_tolerance(const Interval& difference);
 // The overall verdict of several criteria: FAIL if any fails, else INCONCLUSIVE if any is, else PASS.
 Verdict combine(const std::vector<Verdict>& verdicts);
 
+// A FAIL within a family of m criteria (docs/verdicts.md, "Levels of the test"): the command FAILs
+// when any of m criteria FAILs, so one FAIL counts only if it holds at 5 % / m, Holm's first step
+// (for "any rejection" the same as Bonferroni): the 95 % interval, widened about the estimate by
+// z(1 − 0.025/m) / z(0.975), still lies wholly outside ±tolerance. m = 1 is the criterion's own FAIL.
+bool fails_in_family(double estimate, const Interval& ci, double tolerance, std::size_t m);
+
 }  // namespace demscale::stats

@@ -424,6 +424,15 @@ TEST_CASE("A study whose coarse fill the cone could not hold: that ensemble is U
     CHECK_THAT(study.corrected[1].unusable, Catch::Matchers::Contains("1 of 6 fills unusable (seed 3: fill: the cone holds 37.4 g"));
     CHECK(study.corrected[1].criteria.empty());
     CHECK(study.overall() == stats::Verdict::pass);  // the unusable ensemble is no part of it
+    // One criterion that FAILs on its own but not for the family of 3 criteria judged: the command
+    // is INCONCLUSIVE, not FAIL (Holm); far outside, it FAILs.
+    auto& slump = study.corrected[0].criteria[0];
+    slump.estimate = 0.08, slump.interval = {0.0505, 0.1095}, slump.tolerance = 0.05, slump.verdict = stats::Verdict::fail;
+    study.corrected[0].overall = stats::Verdict::fail;
+    CHECK(study.family_size() == 3);
+    CHECK(study.overall() == stats::Verdict::inconclusive);
+    slump.interval = {0.07, 0.09};
+    CHECK(study.overall() == stats::Verdict::fail);
     CHECK(study.judged_scale_factors() == std::vector<double>{1.4});
     const auto table = io::render(report::verdict_table(study, "kantro"), io::Format::csv);
     CHECK_THAT(table, Catch::Matchers::Contains("UNUSABLE FILL"));

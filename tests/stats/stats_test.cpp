@@ -96,3 +96,15 @@ TEST_CASE("Verdicts on constructed samples with known means and spreads", "[stat
     // 0.06 apart with a tight spread straddles 0.05: neither equivalent nor surely different.
     CHECK(equivalence_verdict(difference_interval(fine, sample(0.46, 0.02)), 0.05) == Verdict::inconclusive);
 }
+
+TEST_CASE("Verdict: a FAIL counts for a family of m criteria only at 5 % / m (Holm's first step), by hand", "[stats][verdict]") {
+    // Slump difference 8 % [6, 10] against ±5 %: FAIL on its own. Widened about 8 by
+    // z(1 − 0.025/m)/z(0.975): m = 6, 2.638/1.960 = 1.346, low end 8 − 2·1.346 = 5.31 > 5: still FAIL;
+    // m = 20, 3.023/1.960 = 1.542, low end 4.92 < 5: no longer.
+    const Interval ci{0.06, 0.10};
+    CHECK(fails_in_family(0.08, ci, 0.05, 1));
+    CHECK(fails_in_family(0.08, ci, 0.05, 6));
+    CHECK_FALSE(fails_in_family(0.08, ci, 0.05, 20));
+    CHECK_FALSE(fails_in_family(0.0, {-0.02, 0.02}, 0.05, 1));  // a PASS is no FAIL at any m
+    CHECK(fails_in_family(-0.3, {-0.5, -0.17}, 0.05, 6));      // the k = 3 slump at S_f 1.4: far outside
+}
