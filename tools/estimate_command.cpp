@@ -107,9 +107,9 @@ std::vector<Command> estimate_commands(CLI::App& app) {
     c->add_option("--stands-below", o->stands_below, "a column whose slump over fill height is below this stood (transition model)")
         ->capture_default_str();
     c->add_option("--runs", o->runs,
-                  "judge the runs in this CSV (docs/file-formats.md, runs file: e.g. another engine's, or runs.csv of an earlier study) "
+                  "judge the runs in this CSV (docs/file-formats.md, runs file: e.g. another engine's, or estimate_runs.csv of an earlier study) "
                   "instead of running; --scene gives the surface tension and the tolerance");
-    add_study_run_options(c, o->run, "the CSV files, runs.csv and the figure");
+    add_study_run_options(c, o->run, "the CSV files, estimate_runs.csv and the figure");
     return {{c, [o] { return run_estimate(*o); }}};
 }
 

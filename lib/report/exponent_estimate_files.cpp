@@ -95,7 +95,7 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
         double slumped_sum = 0;
         for (const auto& r : e.measured) {
             rest += r.at_rest;
-            if (r.slump_over_height < stats::TransitionSettings{}.stands_below) standing++;
+            if (r.slump_over_height < study.stands_below) standing++;
             else slumped++, slumped_sum += r.slump_over_height;
         }
         const bool wet_level = e.gamma > 0;
@@ -113,7 +113,9 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
     if (study.has_control()) t.notes.push_back("rows without a surface tension after the levels: the dry control (no liquid), fine then each S_f");
     if (study.wet) t.notes.push_back("coarse levels: gamma is the coarse run's own surface tension (gamma-bar)");
     if (!study.split.empty()) t.notes.push_back(split_note);
-    if (study.wet) t.notes.push_back("standing: seeds whose column slumped less than 0.3 of its fill height; slumped_mean: the mean slump of the others");
+    if (study.wet)
+        t.notes.push_back("standing: seeds whose column slumped less than " + format_short(study.stands_below, 3) +
+                          " of its fill height; slumped_mean: the mean slump of the others");
     return t;
 }
 
@@ -177,7 +179,7 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
     t.notes.push_back("k passing: the k whose coarse slump the model puts within the scene's slump tolerance of the fine one, for every k in "
                       "the interval (from, to) and at k-hat exactly; n/a where the band reaches the end of the fine levels (open) or "
                       "nothing passes for the whole interval");
-    t.notes.push_back("standing runs: slump below 0.3 of the fill height; rms (means shift): root mean square difference of the coarse "
+    t.notes.push_back("standing runs: slump below " + format_short(study.stands_below, 3) + " of the fill height; rms (means shift): root mean square difference of the coarse "
                       "means from the shifted fine curve");
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
     t.notes.push_back("split_levels (means shift): the levels it rests on whose seeds split between the ends of the response; its bootstrap "
@@ -260,7 +262,7 @@ std::string figure_script(const slump::ResponseStudy& study, const std::string& 
     panel("as run (γ of each run)", "0", "surface tension γ of the run (N/m)", false);
     panel("collapsed at k̂ = " + format_short(k_hat, 3) + " (transition model)", format_number(k_hat), "γ̄ / S_f^k (N/m)", true);
     // The quantal part: the share of seeds standing, and the probit.
-    s << "set title 'quantal part: columns that stood (slump < 0.3 H_0)'\nset xlabel 'γ̄ / S_f^{k̂} (N/m)'\nset ylabel 'share standing'\n"
+    s << "set title 'quantal part: columns that stood (slump < " << format_short(study.stands_below, 3) << " H_0)'\nset xlabel 'γ̄ / S_f^{k̂} (N/m)'\nset ylabel 'share standing'\n"
          "set yrange [-0.05:1.05]\nplot \\\n";
     for (std::size_t i = 0; i < sfs.size(); ++i)
         s << (i ? ", \\\n" : "") << "  'estimate_response.csv' using " << at_sf(sfs[i], x_of(sfs[i], format_number(k_hat)))

@@ -120,6 +120,62 @@ std::string verdict_text(const slump::Study& study, const std::vector<double>& s
     return v;
 }
 
+// The measured exponent's section from its study (wet: k-hat, the range of k, the figure; dry: the
+// dry control), its answer in the verdict section, and its caveats. wall: the section's seconds.
+void add_estimate_section(const slump::ResponseStudy& est, const slump::ResponsePlan& rp, double wall, const std::string& scene_label,
+                          const fs::path& figures, Section& section, Section& verdict, std::vector<Caveat>& caveats) {
+    std::size_t fine_runs = 0, coarse_runs = 0;
+    for (const auto& e : est.fine) fine_runs += e.measured.size();
+    for (const auto& levels : est.coarse)
+        for (const auto& e : levels) coarse_runs += e.measured.size();
+    const auto files = write_estimate_files(est, scene_label, figures, true);
+    const std::string cost = "Cost: " + std::to_string(fine_runs) + " fine runs (" + std::to_string(est.fine.size()) + " levels x " +
+                             std::to_string(rp.seeds) + " seeds) and " + std::to_string(coarse_runs) + " coarse runs, " +
+                             format_short(wall, 3) + " s for this section (cached runs cost nothing).";
+    if (!est.wet) {
+        section.blocks.push_back(Paragraph{
+            "A dry scene has no cohesion to vary. The dry control: coarse against fine, one ensemble each, the error coarse-graining "
+            "the dry laws leaves and no exponent can remove (docs/exponent-estimate.md). " + cost});
+        section.blocks.push_back(TableBlock{dry_baseline_table(est, scene_label)});
+        section.blocks.push_back(TableBlock{response_table(est, scene_label)});
+        return;
+    }
+    section.blocks.push_back(Paragraph{
+        "Instead of judging candidate exponents, measure one. The fine scene runs at several surface tensions (factors of the "
+        "scene's gamma), each coarse S_f at gamma-bar = the same factors times S_f^" + format_short(rp.offset_exponent) +
+        ". If gamma-bar = gamma S_f^k keeps the pile, a coarse run at gamma-bar behaves like a fine one at gamma-bar / S_f^k. "
+        "The transition model fits whether each column stood (a probit in ln gamma - k ln S_f) and how far the others slumped "
+        "(the slumped branch, less the dry control's offset) in one likelihood; k-hat is its maximum and the 95 % interval its "
+        "profile likelihood's. From the fitted curve follows the range of k whose coarse slump stays within the scene's slump "
+        "tolerance of the fine one (docs/exponent-estimate.md). " + cost});
+    section.blocks.push_back(TableBlock{exponent_estimate_table(est, scene_label)});
+    section.blocks.push_back(FigureBlock{files.figure_png, "Slump response to surface tension: raw, collapsed at the "
+                                                                    "measured k (with the model's mean response) and at k = 1, 2, 3; "
+                                                                    "the model's quantal and continuous parts; the residual and the "
+                                                                    "profile deviance against k"});
+    section.blocks.push_back(TableBlock{response_table(est, scene_label)});
+    std::string answer = "Measured exponent (transition model): ";
+    for (std::size_t i = 0; i < est.fits.size(); ++i)
+        answer += (i ? "; " : "") + describe_fit(est.fits[i], &est.passing[i], rp.fine.tolerances.slump);
+    verdict.blocks.push_back(Paragraph{answer + " (section Measured exponent)."});
+    for (const auto& f : est.fits)
+        if (!f.determined)
+            caveats.push_back({f.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(f.sf),
+                               "measured exponent undetermined (the likelihood does not close inside k = -2 to 6)"});
+    auto not_at_rest = [&](const slump::ResponseEnsemble& e) {
+        const std::string where = "S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) + " N/m";
+        if (!e.all_at_rest()) caveats.push_back({where, "measured exponent: runs not all at rest"});
+        if (const auto* split = slump::split_of(est, e))
+            caveats.push_back({where, "measured exponent: seeds split (" + std::to_string(split->low) + " low, " +
+                                          std::to_string(split->high) + " high of " + std::to_string(split->seeds) +
+                                          "): the means shift's bootstrap interval understates the uncertainty (the transition "
+                                          "model, which decides, counts them as standing and slumped runs)"});
+    };
+    for (const auto& e : est.fine) not_at_rest(e);
+    for (const auto& levels : est.coarse)
+        for (const auto& e : levels) not_at_rest(e);
+}
+
 }  // namespace
 
 ReportOutcome write_similarity_report(const ReportOptions& o, const std::function<void(const std::string&)>& log) {
@@ -308,56 +364,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
         const auto t0 = Clock::now();
         const auto est = slump::run_response_study(rp, [&](const std::string& s) { say("estimate: " + s); });
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-        std::size_t fine_runs = 0, coarse_runs = 0;
-        for (const auto& e : est.fine) fine_runs += e.measured.size();
-        for (const auto& levels : est.coarse)
-            for (const auto& e : levels) coarse_runs += e.measured.size();
-        const auto files = write_estimate_files(est, o.scene_label, figures, true);
-        const std::string cost = "Cost: " + std::to_string(fine_runs) + " fine runs (" + std::to_string(est.fine.size()) + " levels x " +
-                                 std::to_string(rp.seeds) + " seeds) and " + std::to_string(coarse_runs) + " coarse runs, " +
-                                 format_short(wall, 3) + " s for this section (cached runs cost nothing).";
-        if (!est.wet) {
-            estimate_section.blocks.push_back(Paragraph{
-                "A dry scene has no cohesion to vary. The dry control: coarse against fine, one ensemble each, the error coarse-graining "
-                "the dry laws leaves and no exponent can remove (docs/exponent-estimate.md). " + cost});
-            estimate_section.blocks.push_back(TableBlock{dry_baseline_table(est, o.scene_label)});
-            estimate_section.blocks.push_back(TableBlock{response_table(est, o.scene_label)});
-            return;
-        }
-        estimate_section.blocks.push_back(Paragraph{
-            "Instead of judging candidate exponents, measure one. The fine scene runs at several surface tensions (factors of the "
-            "scene's gamma), each coarse S_f at gamma-bar = the same factors times S_f^" + format_short(rp.offset_exponent) +
-            ". If gamma-bar = gamma S_f^k keeps the pile, a coarse run at gamma-bar behaves like a fine one at gamma-bar / S_f^k. "
-            "The transition model fits whether each column stood (a probit in ln gamma - k ln S_f) and how far the others slumped "
-            "(the slumped branch, less the dry control's offset) in one likelihood; k-hat is its maximum and the 95 % interval its "
-            "profile likelihood's. From the fitted curve follows the range of k whose coarse slump stays within the scene's slump "
-            "tolerance of the fine one (docs/exponent-estimate.md). " + cost});
-        estimate_section.blocks.push_back(TableBlock{exponent_estimate_table(est, o.scene_label)});
-        estimate_section.blocks.push_back(FigureBlock{files.figure_png, "Slump response to surface tension: raw, collapsed at the "
-                                                                        "measured k (with the model's mean response) and at k = 1, 2, 3; "
-                                                                        "the model's quantal and continuous parts; the residual and the "
-                                                                        "profile deviance against k"});
-        estimate_section.blocks.push_back(TableBlock{response_table(est, o.scene_label)});
-        std::string answer = "Measured exponent (transition model): ";
-        for (std::size_t i = 0; i < est.fits.size(); ++i)
-            answer += (i ? "; " : "") + describe_fit(est.fits[i], &est.passing[i], rp.fine.tolerances.slump);
-        verdict_section.blocks.push_back(Paragraph{answer + " (section Measured exponent)."});
-        for (const auto& f : est.fits)
-            if (!f.determined)
-                caveats.push_back({f.sf == 0 ? std::string("all S_f") : "S_f = " + format_short(f.sf),
-                                   "measured exponent undetermined (the likelihood does not close inside k = -2 to 6)"});
-        auto not_at_rest = [&](const slump::ResponseEnsemble& e) {
-            const std::string where = "S_f = " + format_short(e.sf) + ", gamma = " + format_short(e.gamma, 3) + " N/m";
-            if (!e.all_at_rest()) caveats.push_back({where, "measured exponent: runs not all at rest"});
-            if (const auto* split = slump::split_of(est, e))
-                caveats.push_back({where, "measured exponent: seeds split (" + std::to_string(split->low) + " low, " +
-                                              std::to_string(split->high) + " high of " + std::to_string(split->seeds) +
-                                              "): the means shift's bootstrap interval understates the uncertainty (the transition "
-                                              "model, which decides, counts them as standing and slumped runs)"});
-        };
-        for (const auto& e : est.fine) not_at_rest(e);
-        for (const auto& levels : est.coarse)
-            for (const auto& e : levels) not_at_rest(e);
+        add_estimate_section(est, rp, wall, o.scene_label, figures, estimate_section, verdict_section, caveats);
     });
 
     Section inputs{"Inputs", {}};

@@ -105,8 +105,11 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
     };
     const stats::ShapeEnsembles shapes{shapes_of(coarse, dry_coarse), shapes_of(fine, dry_fine), shapes_of(fine, nullptr)};
     // With one seed on a side there is no noise to remove: the plain distance, INCONCLUSIVE anyway.
-    const double plain = stats::shape_distance_of(shapes, all_of(coarse.size()), all_of(fine.size()), false);
-    const auto distance = too_few ? stats::ShapeDistance{plain, plain, {plain, plain}} : stats::measure_shape_distance(shapes);
+    auto plain = [&] {
+        const double d = stats::shape_distance_of(shapes, all_of(coarse.size()), all_of(fine.size()), false);
+        return stats::ShapeDistance{d, d, {d, d}};
+    };
+    const auto distance = too_few ? plain() : stats::measure_shape_distance(shapes);
     auto profile = criterion("profile", distance.distance, distance.ci, tol.profile);
 
     v.criteria = {slump, spread, profile};

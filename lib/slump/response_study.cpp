@@ -198,6 +198,7 @@ void judge_response(ResponseStudy& study, const ResponsePlan& plan) {
     }
     study.estimates = stats::estimate_exponent(study.fine_curve, study.coarse_curves, plan.search);
     study.fits = stats::fit_transition(study.fine_curve, study.coarse_curves, plan.transition);
+    study.stands_below = plan.transition.stands_below;
     study.split = stats::split_levels(study.fine_curve, study.coarse_curves);
     study.fine_range = {INFINITY, -INFINITY};
     for (const auto& l : study.fine_curve.levels) study.fine_range = {std::min(study.fine_range.low, l.x), std::max(study.fine_range.high, l.x)};

@@ -69,6 +69,7 @@ struct ResponseStudy {
     std::vector<stats::ExponentEstimate> raw_estimates;
     std::vector<stats::PassingRange> passing;           // the k that pass at the scene's slump tolerance, per S_f then jointly (from fits)
     stats::Interval fine_range;                         // the fine levels' ln γ, lowest and highest
+    double stands_below = 0;                            // slump over fill height below which a run stood (the model's)
     bool has_control() const { return !dry_control.empty(); }
     std::vector<stats::SplitLevel> split;               // levels whose seeds split (wet only; stats::split_levels)
     std::vector<DryBaseline> baselines;                 // dry only

@@ -92,7 +92,10 @@ Shift best_shift(const MeanCurve& fine, const std::vector<MeanCurve>& coarse, co
     return {objective(fine, coarse, refined) <= least ? refined : std::min(s.k_min + best * step, s.k_max), unique};
 }
 
-void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
+
+}  // namespace
+
+void check_response_curves(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) {
     if (fine.levels.size() < 2) throw std::invalid_argument("the fine response curve needs at least two levels");
     auto check_levels = [](const ResponseCurve& c) {
         for (const auto& l : c.levels)
@@ -104,8 +107,6 @@ void check(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse) 
         check_levels(c);
     }
 }
-
-}  // namespace
 
 double interpolate_response(const ResponseCurve& fine, double x) { return interpolate(means_of(fine), x); }
 
@@ -178,7 +179,7 @@ std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vecto
 }
 
 double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse, double k) {
-    check(fine, coarse);
+    check_response_curves(fine, coarse);
     std::vector<MeanCurve> c;
     std::size_t levels = 0;
     for (const auto& curve : coarse) c.push_back(means_of(curve, control_offset(fine, curve))), levels += curve.levels.size();
@@ -187,7 +188,7 @@ double shift_residual_rms(const ResponseCurve& fine, const std::vector<ResponseC
 
 std::vector<ExponentEstimate> estimate_exponent(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse,
                                                 const ShiftSearch& search) {
-    check(fine, coarse);
+    check_response_curves(fine, coarse);
     if (!(search.k_min < search.k_max) || search.resamples < 10) throw std::invalid_argument("a bad exponent search");
     // The sets to estimate from: each coarse curve alone, then all together.
     std::vector<std::vector<std::size_t>> sets;

@@ -85,6 +85,10 @@ struct SplitLevel {
 // The split levels of the fine curve, then of each coarse curve (in their order, levels as given).
 std::vector<SplitLevel> split_levels(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse);
 
+// Throws std::invalid_argument for a fine curve with fewer than two levels, a coarse curve with
+// S_f ≤ 1 or no levels, or a level without runs or with a non-finite x.
+void check_response_curves(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse);
+
 // The fine curve's value at x: the interpolant through the levels' means, flat beyond them.
 double interpolate_response(const ResponseCurve& fine, double x);
 

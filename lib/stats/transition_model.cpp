@@ -285,12 +285,7 @@ double mean_response(const TransitionFit& fit, double u) {
 
 std::vector<TransitionFit> fit_transition(const ResponseCurve& fine, const std::vector<ResponseCurve>& coarse,
                                           const TransitionSettings& settings) {
-    if (fine.levels.size() < 2) throw std::invalid_argument("the fine response curve needs at least two levels");
-    for (const auto& c : coarse)
-        if (!(c.sf > 1) || c.levels.empty()) throw std::invalid_argument("a coarse response curve needs S_f > 1 and at least one level");
-    for (const auto* c : {&fine})
-        for (const auto& l : c->levels)
-            if (l.y.empty() || !std::isfinite(l.x)) throw std::invalid_argument("a response level without runs or with a non-finite x");
+    check_response_curves(fine, coarse);
     if (!(settings.k_min < settings.k_max) || !(settings.stands_below > 0) || !(settings.min_width > 0))
         throw std::invalid_argument("bad transition model settings");
     std::vector<TransitionFit> out;
