@@ -1,14 +1,17 @@
-// Synthetic slump runs shaped like the reference scene's (data/scenes/kantro_wet.toml, 8 seeds,
-// measured 2026-12-07; docs/exponent-checks.md), for coverage tests of the exponent's intervals:
-//  - a column stands with probability Φ((u − θ)/w), θ = ln 0.15 N/m, w = 0.25 (fine at 0.148 N/m:
-//    4 of 8 seeds stood; at 0.074 none; fine and coarse alike in u = ln γ − k ln S_f);
-//  - a standing column slumps 0.06 ± 0.03 of its height; a slumped one follows the branch through the
-//    fine means 0.673 (γ = 0.037), 0.521 (0.074) and S_f 1.4's 0.40 at 0.145 N/m read at k = 1,
-//    y = 0.521 − 0.197 v + 0.032 v², v = u − ln 0.074, with a run-to-run sd of 0.015; but where
-//    P(stand) ≥ 0.1 a column that fails collapses: 0.535 ± 0.03 (the fine runs that slumped at 2γ);
-//  - the dry control slumps 0.763 ± 0.005 fine, and 0.009 (S_f 1.4) and 0.027 (1.96) more coarse;
-//  - a level whose own γ exceeds 0.27 N/m is lost (the cone's fills fall short there);
-//  - the design: fine levels f·γ, coarse f·γ·S_f^offset, γ = 0.074 N/m.
+// Synthetic slump runs for tests of the exponent's estimators, in two shapes:
+//  - model_form(): the transition model's own form (stats/transition_model.hpp), so that a fit of
+//    many runs must give back its parameters: a column stands (slump 0.06 ± 0.03) with probability
+//    Φ((u − ln 0.15)/0.25); where P(stand) ≥ 0.1 a column that fails collapses to 0.535 ± 0.03;
+//    elsewhere it follows y = 0.521 − 0.197 v + 0.032 v² with sd 0.015; sd the same at every S_f.
+//  - reference_measured(): the reference scene's runs (data/scenes/kantro_wet.toml, 12 seeds per
+//    level, seed bases 101, 201 and 301, measured 2026-12-07; docs/exponent-checks.md). No column
+//    stood: the slump falls on a concave branch, the cubic through the fine means and the coarse
+//    ones read at k = 1 after their dry offsets, y = 0.526 − 0.353 v − 0.273 v² − 0.075 v³
+//    (residuals ≤ 0.014), and its run-to-run sd grows towards the transition and with S_f:
+//    0.0055 e^{1.2 (v + ln 2)} S_f^1.5 (measured fine 0.005-0.019, S_f 1.4 0.008-0.028,
+//    1.96 0.019-0.035); a level whose own γ exceeds 0.17 N/m is lost (S_f 1.96's fills fall short).
+// In both, u = ln γ − k ln S_f and v = u − ln 0.074 (a coarse run at γ̄ behaves like a fine run at
+// γ̄ / S_f^k); the dry control slumps 0.763 fine and more coarse (the dry offset).
 #pragma once
 
 #include <cmath>
@@ -19,6 +22,21 @@
 
 namespace demscale::test {
 
+struct RunShape {
+    std::vector<double> branch;    // y(v) = Σ branch[j] vʲ
+    double sd = 0.015;             // run-to-run sd on the branch at v = −ln 2 (γ/2), fine
+    double sd_growth = 0;          // d ln sd / dv
+    double sd_sf_power = 0;        // sd ∝ S_f^this
+    bool stands = false;           // the model's form: standing columns and collapses near them
+    double dry_offset_196 = 0.027; // coarse dry control above the fine one at S_f 1.96 (∝ ln S_f)
+    double dry_sd = 0.005;         // fine
+    double dry_sd_sf_power = 0;    // the dry sd ∝ S_f^this
+    double lost_above = 0.27;      // N/m: a level whose own γ exceeds it is lost
+};
+
+inline RunShape model_form() { return {{0.521, -0.197, 0.032}, 0.015, 0, 0, true, 0.027, 0.005, 0, 0.27}; }
+inline RunShape reference_measured() { return {{0.526, -0.353, -0.273, -0.075}, 0.0055, 1.2, 1.5, false, 0.017, 0.0053, 0.8, 0.17}; }
+
 // estimate-exponent's default design (the shipped design before 2026-12-07 was 0.5, 1, 2, 4 with
 // offset 2 and 8 seeds).
 struct ReferenceLikeDesign {
@@ -27,25 +45,32 @@ struct ReferenceLikeDesign {
     double offset = 1;
     int seeds = 4;
     bool control = true;
+    RunShape shape = reference_measured();
 };
 
-inline double reference_branch(double u) {
+inline double shape_branch(const RunShape& s, double u) {
     const double v = u - std::log(0.074);
-    return 0.521 - 0.197 * v + 0.032 * v * v;
+    double y = 0, power = 1;
+    for (double c : s.branch) y += c * power, power *= v;
+    return y;
 }
-inline double reference_stand_probability(double u) { return 0.5 * std::erfc(-(u - std::log(0.15)) / 0.25 / std::sqrt(2.0)); }
+inline double model_stand_probability(double u) { return 0.5 * std::erfc(-(u - std::log(0.15)) / 0.25 / std::sqrt(2.0)); }
 
-inline double reference_dry_offset(double sf) { return sf <= 1 ? 0.0 : 0.027 * std::log(sf) / std::log(1.96); }
+inline double shape_dry_offset(const RunShape& s, double sf) { return sf <= 1 ? 0.0 : s.dry_offset_196 * std::log(sf) / std::log(1.96); }
 
 // One run's slump over fill height at the run's own ln γ (coarse at S_f with true exponent k).
-inline double reference_like_run(double x, double sf, double k, std::mt19937_64& rng) {
+inline double shaped_run(const RunShape& s, double x, double sf, double k, std::mt19937_64& rng) {
     const double u = x - k * std::log(sf);
     std::uniform_real_distribution<double> coin(0, 1);
     std::normal_distribution<double> noise(0, 1);
-    const double p = reference_stand_probability(u);
-    if (coin(rng) < p) return std::max(0.0, 0.06 + 0.03 * noise(rng));
-    if (p >= 0.1) return 0.535 + reference_dry_offset(sf) + 0.03 * noise(rng);
-    return reference_branch(u) + reference_dry_offset(sf) + 0.015 * noise(rng);
+    const double offset = shape_dry_offset(s, sf);
+    if (s.stands) {
+        const double p = model_stand_probability(u);
+        if (coin(rng) < p) return std::max(0.0, 0.06 + 0.03 * noise(rng));
+        if (p >= 0.1) return 0.535 + offset + 0.03 * noise(rng);
+    }
+    const double sd = s.sd * std::exp(s.sd_growth * (u - std::log(0.037))) * std::pow(sf, s.sd_sf_power);
+    return std::max(0.0, shape_branch(s, u) + offset + sd * noise(rng));  // a pile does not rise
 }
 
 inline stats::ResponseCurve reference_like_curve(double sf, double k, const ReferenceLikeDesign& d, std::mt19937_64& rng) {
@@ -54,15 +79,16 @@ inline stats::ResponseCurve reference_like_curve(double sf, double k, const Refe
     const double gamma = 0.074;
     for (double f : d.factors) {
         const double g = f * gamma * (sf > 1 ? std::pow(sf, d.offset) : 1.0);
-        if (g > 0.27) continue;  // the fill falls short: the level is lost
+        if (g > d.shape.lost_above) continue;  // the fill falls short: the level is lost
         stats::ResponseLevel l;
         l.x = std::log(g);
-        for (int s = 0; s < d.seeds; ++s) l.y.push_back(reference_like_run(l.x, sf, k, rng)), l.seed.push_back(s);
+        for (int s = 0; s < d.seeds; ++s) l.y.push_back(shaped_run(d.shape, l.x, sf, k, rng)), l.seed.push_back(s);
         c.levels.push_back(l);
     }
     if (d.control) {
-        std::normal_distribution<double> noise(0, 0.005);
-        for (int s = 0; s < d.seeds; ++s) c.control.y.push_back(0.763 + reference_dry_offset(sf) + noise(rng)), c.control.seed.push_back(s);
+        const double sd = d.shape.dry_sd * std::pow(sf, d.shape.dry_sd_sf_power);
+        std::normal_distribution<double> noise(0, sd);
+        for (int s = 0; s < d.seeds; ++s) c.control.y.push_back(0.763 + shape_dry_offset(d.shape, sf) + noise(rng)), c.control.seed.push_back(s);
     }
     return c;
 }
