@@ -34,11 +34,13 @@ struct WetRun {
     bool stands;
     bool on_branch;     // slumped, at a level where no run stood: a point of the continuous part
     std::size_t curve;  // 0 fine, then the chosen coarse curves
+    double variance;    // of its level, shrunk towards its curve's (on the branch only)
 };
 
 struct Data {
     std::vector<WetRun> wet;
     std::vector<std::vector<double>> control;  // per curve; all empty: no offsets
+    std::vector<double> control_variance;      // per curve, shrunk towards the controls' pooled one
     bool controls = false;
     int degree = 1;        // of the slumped branch
     double centre = 0;     // ū
@@ -47,24 +49,65 @@ struct Data {
     bool quantal() const { return standing > 0 && slumped > 0; }
 };
 
-Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s) {
+// The run-to-run variance of each group of runs (a level, a control), shrunk towards the pool of
+// its kind: (ν₀ s²_pool + (n − 1) s²) / (ν₀ + n − 1), ν₀ = 3. The spread grows towards the
+// transition and with S_f (docs/exponent-estimate.md); with 4 seeds a level's own s² has 3 degrees
+// of freedom, too few to weight by alone.
+std::vector<double> shrunk_variances(const std::vector<std::vector<double>>& groups) {
+    constexpr double prior_dof = 3, floor = 1e-8;  // floor: (1e-4 of the fill height)²
+    std::vector<double> own(groups.size(), 0), dof(groups.size(), 0);
+    double pooled_ss = 0, pooled_dof = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const auto& y = groups[g];
+        if (y.size() < 2) continue;
+        const double mean = std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(y.size());
+        double ss = 0;
+        for (double v : y) ss += (v - mean) * (v - mean);
+        dof[g] = static_cast<double>(y.size() - 1), own[g] = ss / dof[g];
+        pooled_ss += ss, pooled_dof += dof[g];
+    }
+    const double pooled = pooled_dof > 0 ? pooled_ss / pooled_dof : floor;
+    std::vector<double> out(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        out[g] = std::max(floor, (prior_dof * pooled + dof[g] * own[g]) / (prior_dof + dof[g]));
+    return out;
+}
+
+// A level is on the slumped branch when none of its runs stood. `classified` decides that (the same
+// curves, or the full ones when a jackknife has taken a seed out: the branch then keeps its levels,
+// so that the jackknife measures the runs' noise, not a level that changes sides).
+bool on_branch(const ResponseLevel& l, const TransitionSettings& s) {
+    return std::none_of(l.y.begin(), l.y.end(), [&](double y) { return y < s.stands_below; });
+}
+
+Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s, const std::vector<const ResponseCurve*>& classified) {
     Data d;
     std::size_t fine_slumped_levels = 0;
     double fine_x = 0;
     std::size_t fine_n = 0;
-    for (std::size_t c = 0; c < curves.size(); ++c)
-        for (const auto& l : curves[c]->levels) {
-            const bool pure = std::none_of(l.y.begin(), l.y.end(), [&](double y) { return y < s.stands_below; });
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const auto& levels = curves[c]->levels;
+        std::vector<bool> pure(levels.size());
+        std::vector<std::vector<double>> branch_levels;
+        for (std::size_t j = 0; j < levels.size(); ++j)
+            if ((pure[j] = on_branch(classified[c]->levels[j], s)) && !levels[j].y.empty()) branch_levels.push_back(levels[j].y);
+        const std::vector<double> variance = shrunk_variances(branch_levels);
+        std::size_t branch_level = 0;
+        for (std::size_t j = 0; j < levels.size(); ++j) {
+            const auto& l = levels[j];
+            if (l.y.empty()) continue;
+            const double level_variance = pure[j] ? variance[branch_level++] : 0.0;
             for (double y : l.y) {
                 const bool stands = y < s.stands_below;
-                d.wet.push_back({l.x, std::log(curves[c]->sf), y, stands, pure, c});
+                d.wet.push_back({l.x, std::log(curves[c]->sf), y, stands, pure[j], c, level_variance});
                 if (stands) d.standing++, d.standing_slump += y;
                 else d.slumped++;
-                if (pure) d.on_branch++;
-                if (pure && c == 0) fine_x += l.x, fine_n++;
+                if (pure[j]) d.on_branch++;
+                if (pure[j] && c == 0) fine_x += l.x, fine_n++;
             }
-            fine_slumped_levels += pure && c == 0;
+            fine_slumped_levels += pure[j] && c == 0;
         }
+    }
     if (d.standing > 0) d.standing_slump /= static_cast<double>(d.standing);
     d.centre = fine_n > 0 ? fine_x / static_cast<double>(fine_n) : 0.0;
     // The branch's shape comes from the fine levels alone, so that no shift of the coarse ones can
@@ -72,10 +115,14 @@ Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSet
     // the polynomial's rank there).
     d.degree = fine_slumped_levels >= 3 ? 2 : fine_slumped_levels >= 2 ? 1 : 0;
     d.controls = std::all_of(curves.begin(), curves.end(), [](const auto* c) { return !c->control.y.empty(); });
-    if (d.controls)
+    if (d.controls) {
         for (const auto* c : curves) d.control.push_back(c->control.y);
+        d.control_variance = shrunk_variances(d.control);
+    }
     return d;
 }
+
+Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s) { return gather(curves, s, curves); }
 
 // The probit part at one k: its maximum log-likelihood, α and β of z = α + β u kept for a warm start.
 struct Probit {
@@ -131,11 +178,13 @@ double fit_probit(const Data& d, double k, double b_max, Probit& p) {
     return ll;
 }
 
-// The continuous part at one k: weighted least squares with the sd's of the wet and the dry runs
-// re-estimated (their maximum likelihood), and its log-likelihood.
+// The continuous part at one k: weighted least squares, each run weighted by its group's shrunk
+// variance times a scale (one for the wet runs, one for the dry) re-estimated by maximum
+// likelihood, and its log-likelihood.
 struct Branch {
     Eigen::VectorXd p;  // β₀, β₁[, β₂], then d per curve
-    double sigma = 0, sigma_dry = 0, loglik = 0;
+    double sigma = 0;   // root mean square residual of the wet runs
+    double loglik = 0;
 };
 
 Branch fit_branch(const Data& d, double k) {
@@ -143,7 +192,7 @@ Branch fit_branch(const Data& d, double k) {
     std::size_t rows = d.on_branch;
     for (const auto& c : d.control) rows += d.controls ? c.size() : 0;
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), nb + nd);
-    Eigen::VectorXd y(static_cast<Eigen::Index>(rows));
+    Eigen::VectorXd y(static_cast<Eigen::Index>(rows)), variance(static_cast<Eigen::Index>(rows));
     std::vector<bool> dry(rows, false);
     Eigen::Index i = 0;
     for (const auto& r : d.wet) {
@@ -151,30 +200,40 @@ Branch fit_branch(const Data& d, double k) {
         const double v = r.x - k * r.log_sf - d.centre;
         for (int j = 0; j < nb; ++j) A(i, j) = std::pow(v, j);
         if (nd > 0 && r.curve > 0) A(i, nb + static_cast<int>(r.curve)) = 1, A(i, nb) = -1;
+        variance(i) = r.variance;
         y(i++) = r.y;
     }
     for (int c = 0; c < nd; ++c)
-        for (double v : d.control[static_cast<std::size_t>(c)]) A(i, nb + c) = 1, dry[static_cast<std::size_t>(i)] = true, y(i++) = v;
-    const double floor = 1e-4;  // of the fill height: noiseless data keep a finite likelihood
+        for (double v : d.control[static_cast<std::size_t>(c)]) {
+            A(i, nb + c) = 1, dry[static_cast<std::size_t>(i)] = true;
+            variance(i) = d.control_variance[static_cast<std::size_t>(c)];
+            y(i++) = v;
+        }
     Branch b;
-    b.sigma = b.sigma_dry = 1;
+    double scale = 1, scale_dry = 1;  // of the variances
     for (int it = 0; it < 8; ++it) {
-        const double previous = b.sigma, previous_dry = b.sigma_dry;
+        const double previous = scale, previous_dry = scale_dry;
         Eigen::VectorXd w(A.rows());
-        for (Eigen::Index r = 0; r < A.rows(); ++r) w(r) = 1 / (dry[static_cast<std::size_t>(r)] ? b.sigma_dry : b.sigma);
+        for (Eigen::Index r = 0; r < A.rows(); ++r) w(r) = 1 / std::sqrt((dry[static_cast<std::size_t>(r)] ? scale_dry : scale) * variance(r));
         b.p = (w.asDiagonal() * A).completeOrthogonalDecomposition().solve(w.asDiagonal() * y);
         const Eigen::VectorXd res = y - A * b.p;
-        double ss = 0, ss_dry = 0;
+        double ss = 0, ss_dry = 0, raw = 0;
         std::size_t n = 0, n_dry = 0;
-        for (Eigen::Index r = 0; r < A.rows(); ++r) (dry[static_cast<std::size_t>(r)] ? (ss_dry += res(r) * res(r), n_dry++) : (ss += res(r) * res(r), n++));
-        b.sigma = std::max(floor, n ? std::sqrt(ss / static_cast<double>(n)) : floor);
-        b.sigma_dry = std::max(floor, n_dry ? std::sqrt(ss_dry / static_cast<double>(n_dry)) : floor);
+        for (Eigen::Index r = 0; r < A.rows(); ++r) {
+            const double z = res(r) * res(r) / variance(r);
+            if (dry[static_cast<std::size_t>(r)]) ss_dry += z, n_dry++;
+            else ss += z, raw += res(r) * res(r), n++;
+        }
+        constexpr double least = 1e-6;  // of the scale: noiseless data keep a finite likelihood
+        scale = std::max(least, n ? ss / static_cast<double>(n) : 1.0);
+        scale_dry = std::max(least, n_dry ? ss_dry / static_cast<double>(n_dry) : 1.0);
+        b.sigma = n ? std::sqrt(raw / static_cast<double>(n)) : 0.0;
         b.loglik = 0;
         for (Eigen::Index r = 0; r < A.rows(); ++r) {
-            const double s = dry[static_cast<std::size_t>(r)] ? b.sigma_dry : b.sigma;
-            b.loglik += -0.5 * std::log(2 * M_PI * s * s) - 0.5 * res(r) * res(r) / (s * s);
+            const double s2 = (dry[static_cast<std::size_t>(r)] ? scale_dry : scale) * variance(r);
+            b.loglik += -0.5 * std::log(2 * M_PI * s2) - 0.5 * res(r) * res(r) / s2;
         }
-        if (std::abs(b.sigma - previous) < 1e-6 * b.sigma && std::abs(b.sigma_dry - previous_dry) < 1e-6 * b.sigma_dry) break;
+        if (std::abs(scale - previous) < 1e-6 * scale && std::abs(scale_dry - previous_dry) < 1e-6 * scale_dry) break;
     }
     return b;
 }
@@ -195,64 +254,163 @@ AtK evaluate(const Data& d, double k, const TransitionSettings& s, Probit warm) 
     return r;
 }
 
+// The maximum of ℓ(k) over [lo, hi]: a grid of 0.1, each point warm-started from its neighbour's
+// probit, then golden section between the best grid point's neighbours.
+struct Maximum {
+    double k = 0, loglik = 0;
+    std::size_t best = 0;              // grid index nearest the maximum
+    std::vector<double> grid, values;  // k and ℓ(k) on the grid
+    std::vector<Probit> probits;       // per grid point, for warm starts near it
+    double at(const Data& d, const TransitionSettings& s, double where) const {
+        const double step = grid.size() > 1 ? grid[1] - grid[0] : 1;
+        const auto i = static_cast<std::size_t>(std::clamp(std::lround((where - grid.front()) / step), 0L, static_cast<long>(grid.size() - 1)));
+        return evaluate(d, where, s, probits[i]).loglik;
+    }
+};
+
+Maximum maximise(const Data& d, const TransitionSettings& s, double lo, double hi) {
+    Maximum m;
+    const double step = 0.1;
+    const int n = std::max(1, static_cast<int>(std::ceil((hi - lo) / step)));
+    Probit warm;
+    for (int i = 0; i <= n; ++i) {
+        const double k = std::min(lo + i * step, hi);
+        const AtK at = evaluate(d, k, s, warm);
+        warm = at.probit;
+        m.probits.push_back(warm), m.grid.push_back(k), m.values.push_back(at.loglik);
+    }
+    m.best = static_cast<std::size_t>(std::max_element(m.values.begin(), m.values.end()) - m.values.begin());
+    const double golden = 0.5 * (std::sqrt(5.0) - 1);
+    double a = m.grid[m.best > 0 ? m.best - 1 : 0], b = m.grid[std::min(m.best + 1, m.grid.size() - 1)];
+    double c = b - golden * (b - a), e = a + golden * (b - a), fc = m.at(d, s, c), fe = m.at(d, s, e);
+    for (int it = 0; it < 30; ++it) {
+        if (fc >= fe) b = e, e = c, fe = fc, c = b - golden * (b - a), fc = m.at(d, s, c);
+        else a = c, c = e, fc = fe, e = a + golden * (b - a), fe = m.at(d, s, e);
+    }
+    m.k = 0.5 * (a + b), m.loglik = m.at(d, s, m.k);
+    if (m.loglik < m.values[m.best]) m.k = m.grid[m.best], m.loglik = m.values[m.best];
+    return m;
+}
+
+long seed_of(const ResponseLevel& l, std::size_t i) { return l.seed.empty() ? static_cast<long>(i) : l.seed[i]; }
+
+std::vector<long> seeds_of(const ResponseCurve& c) {
+    std::vector<long> seeds;
+    auto add = [&](const ResponseLevel& l) {
+        for (std::size_t i = 0; i < l.y.size(); ++i) seeds.push_back(seed_of(l, i));
+    };
+    add(c.control);
+    for (const auto& l : c.levels) add(l);
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    return seeds;
+}
+
+// The curve without a group of seeds' runs (a level left empty stays, empty, so that levels keep
+// their index).
+ResponseCurve without_seeds(const ResponseCurve& c, const std::vector<long>& gone) {
+    auto keep = [&](const ResponseLevel& l) {
+        ResponseLevel out;
+        out.x = l.x;
+        for (std::size_t i = 0; i < l.y.size(); ++i)
+            if (std::find(gone.begin(), gone.end(), seed_of(l, i)) == gone.end()) out.y.push_back(l.y[i]), out.seed.push_back(seed_of(l, i));
+        return out;
+    };
+    ResponseCurve out;
+    out.sf = c.sf, out.control = keep(c.control);
+    for (const auto& l : c.levels) out.levels.push_back(keep(l));
+    return out;
+}
+
+// The delete-one-seed jackknife of k-hat: a seed's runs at every level and in the control leave
+// together, curve by curve (fine and coarse seeds are independent). Its variance,
+// Σ_c (g_c − 1)/g_c Σ_j (k̂₋ⱼ − k̄_c)², does not lean on the model's noise being right; its degrees of
+// freedom are Σ_c (g_c − 1) over curves with at least two seeds. Beyond 10 seeds a curve's seeds
+// leave in 10 groups (the grouped jackknife), which bounds the cost.
+void seed_jackknife(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s, TransitionFit& f) {
+    double variance = 0;
+    std::size_t dof = 0;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const auto seeds = seeds_of(*curves[c]);
+        if (seeds.size() < 2) continue;
+        const std::size_t groups = std::min<std::size_t>(seeds.size(), 10);
+        std::vector<double> k;
+        for (std::size_t g = 0; g < groups; ++g) {
+            std::vector<long> gone;
+            for (std::size_t i = g; i < seeds.size(); i += groups) gone.push_back(seeds[i]);
+            ResponseCurve reduced = without_seeds(*curves[c], gone);
+            std::vector<const ResponseCurve*> set = curves;
+            set[c] = &reduced;
+            const Data d = gather(set, s, curves);
+            if (d.wet.empty()) return;  // nothing left to fit: no jackknife
+            k.push_back(maximise(d, s, std::max(s.k_min, f.k - 1.5), std::min(s.k_max, f.k + 1.5)).k);
+        }
+        const double n = static_cast<double>(k.size()), mean = std::accumulate(k.begin(), k.end(), 0.0) / n;
+        for (double v : k) variance += (n - 1) / n * (v - mean) * (v - mean);
+        dof += k.size() - 1;
+    }
+    if (dof < 2) return;
+    f.jackknife_se = std::sqrt(variance), f.jackknife_dof = dof;
+    const double half = gsl_cdf_tdist_Pinv(0.975, static_cast<double>(dof)) * f.jackknife_se;
+    f.ci = {std::min(f.profile_ci.low, f.k - half), std::max(f.profile_ci.high, f.k + half)};
+}
+
+// Whether the coarse branch lies beyond the fine one at k̂: a coarse curve a third or more of whose
+// slumped-branch runs sit further than 0.15 in ln γ outside the fine branch's levels is read off an
+// extrapolated polynomial.
+bool extrapolated(const Data& d, double k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& r : d.wet)
+        if (r.curve == 0 && r.on_branch) lo = std::min(lo, r.x), hi = std::max(hi, r.x);
+    if (!(lo <= hi)) return false;
+    std::vector<std::size_t> outside, total;
+    for (const auto& r : d.wet) {
+        if (r.curve == 0 || !r.on_branch) continue;
+        if (r.curve >= total.size()) total.resize(r.curve + 1, 0), outside.resize(r.curve + 1, 0);
+        const double u = r.x - k * r.log_sf;
+        total[r.curve]++, outside[r.curve] += u < lo - 0.15 || u > hi + 0.15;
+    }
+    for (std::size_t c = 1; c < total.size(); ++c)
+        if (total[c] > 0 && 3 * outside[c] >= total[c]) return true;
+    return false;
+}
+
 TransitionFit fit_set(const std::vector<const ResponseCurve*>& curves, double sf, const TransitionSettings& s) {
     const Data d = gather(curves, s);
     TransitionFit f;
     f.sf = sf;
     f.standing = d.standing, f.slumped = d.slumped, f.quantal = d.quantal(), f.centre = d.centre;
     f.standing_slump = d.standing_slump;
-    // The profile on a grid of 0.1, each point warm-started from its neighbour's probit.
-    const double step = 0.1;
-    const int n = static_cast<int>(std::ceil((s.k_max - s.k_min) / step));
-    std::vector<double> ll(static_cast<std::size_t>(n) + 1);
-    Probit warm;
-    std::vector<Probit> probits;
-    for (int i = 0; i <= n; ++i) {
-        const double k = std::min(s.k_min + i * step, s.k_max);
-        const AtK at = evaluate(d, k, s, warm);
-        warm = at.probit;
-        probits.push_back(warm);
-        f.profile_k.push_back(k);
-        ll[static_cast<std::size_t>(i)] = at.loglik;
-    }
-    const auto best = static_cast<std::size_t>(std::max_element(ll.begin(), ll.end()) - ll.begin());
-    // Golden section between the best grid point's neighbours.
-    const double golden = 0.5 * (std::sqrt(5.0) - 1);
-    double a = f.profile_k[best > 0 ? best - 1 : 0], b = f.profile_k[std::min(best + 1, ll.size() - 1)];
-    auto value = [&](double k) {  // warm-started from the nearest grid point's probit
-        const auto i = static_cast<std::size_t>(std::clamp(std::lround((k - s.k_min) / step), 0L, static_cast<long>(n)));
-        return evaluate(d, k, s, probits[i]).loglik;
-    };
-    double c = b - golden * (b - a), e = a + golden * (b - a), fc = value(c), fe = value(e);
-    for (int it = 0; it < 30; ++it) {
-        if (fc >= fe) b = e, e = c, fe = fc, c = b - golden * (b - a), fc = value(c);
-        else a = c, c = e, fc = fe, e = a + golden * (b - a), fe = value(e);
-    }
-    double k_hat = 0.5 * (a + b), ll_hat = value(k_hat);
-    if (ll_hat < ll[best]) k_hat = f.profile_k[best], ll_hat = ll[best];
-    for (double v : ll) f.profile_deviance.push_back(std::max(0.0, 2 * (ll_hat - v)));
+    const Maximum m = maximise(d, s, s.k_min, s.k_max);
+    const double k_hat = m.k, ll_hat = m.loglik;
+    f.profile_k = m.grid;
+    for (double v : m.values) f.profile_deviance.push_back(std::max(0.0, 2 * (ll_hat - v)));
     const std::size_t wet_params = static_cast<std::size_t>(d.degree + 2) + (d.controls ? curves.size() - 1 : 0);
     f.cutoff = deviance_cutoff(d.on_branch, wet_params);
-    // The interval: from k̂ outward to the first grid point beyond χ²₁, then bisection (the part of
-    // {k : deviance ≤ χ²₁} that holds k̂).
+    // The interval: from k̂ outward to the first grid point beyond the cutoff, then bisection (the
+    // part of {k : deviance ≤ cutoff} that holds k̂).
+    const int n = static_cast<int>(m.grid.size()) - 1;
     auto crossing = [&](int dir) -> double {
-        int i = static_cast<int>(best);
+        int i = static_cast<int>(m.best);
         while (i + dir >= 0 && i + dir <= n && f.profile_deviance[static_cast<std::size_t>(i + dir)] <= f.cutoff) i += dir;
         if (i + dir < 0 || i + dir > n) return dir < 0 ? s.k_min : s.k_max;
-        double inside = f.profile_k[static_cast<std::size_t>(i)];
-        double outside = f.profile_k[static_cast<std::size_t>(i + dir)];
+        double inside = m.grid[static_cast<std::size_t>(i)];
+        double outside = m.grid[static_cast<std::size_t>(i + dir)];
         for (int it = 0; it < 30; ++it) {
             const double mid = 0.5 * (inside + outside);
-            (2 * (ll_hat - value(mid)) <= f.cutoff ? inside : outside) = mid;
+            (2 * (ll_hat - m.at(d, s, mid)) <= f.cutoff ? inside : outside) = mid;
         }
         return 0.5 * (inside + outside);
     };
     f.k = k_hat;
-    f.ci = {crossing(-1), crossing(+1)};
-    const double margin = step + 1e-9;
+    f.profile_ci = f.ci = {crossing(-1), crossing(+1)};
+    const double margin = 0.1 + 1e-9;
     f.determined = f.ci.low > s.k_min + margin && f.ci.high < s.k_max - margin;
+    if (f.determined) seed_jackknife(curves, s, f);
+    f.determined = f.ci.low > s.k_min + margin && f.ci.high < s.k_max - margin;
+    f.extrapolated = extrapolated(d, k_hat);
     // The parameters at k̂.
-    const AtK at = evaluate(d, k_hat, s, probits[best]);
+    const AtK at = evaluate(d, k_hat, s, m.probits[m.best]);
     if (d.quantal() && at.probit.b > 0) f.threshold = -at.probit.a / at.probit.b, f.width = 1 / at.probit.b;
     else f.threshold = NAN, f.width = NAN;
     f.on_branch = d.on_branch;

@@ -23,6 +23,7 @@
 // would shrink to nothing.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "stats/curve_shift.hpp"
@@ -38,8 +39,12 @@ struct TransitionSettings {
 struct TransitionFit {
     double sf = 0;             // 0: jointly over every S_f
     double k = 0;              // k̂
-    Interval ci;               // 95 % profile likelihood interval
+    Interval ci;               // 95 %: the profile interval widened to the seed jackknife's where that is wider
+    Interval profile_ci;       // 95 % profile likelihood interval
     double cutoff = 0;         // the deviance it admits
+    double jackknife_se = NAN; // delete-one-seed jackknife standard error of k̂ (NaN: fewer than 3 seeds in all)
+    std::size_t jackknife_dof = 0;
+    bool extrapolated = false; // a coarse curve's slumped runs lie mostly beyond the fine levels at k̂
     bool determined = false;   // the interval closes inside [k_min, k_max]
     double threshold = 0;      // θ: fine ln γ where P(stand) = ½ (at k̂; NaN without stand and slump both)
     double width = 0;          // w, ln γ
