@@ -60,6 +60,9 @@ std::string groups_inside(const stats::Interval& ci) {
 std::string describe_fit(const stats::TransitionFit& f, const stats::PassingRange* pass, double tolerance) {
     std::string s = std::string(f.sf == 0 ? "all S_f" : "S_f = " + format_short(f.sf, 3)) + ": k-hat = " + format_short(f.k, 3) + " [" + format_short(f.ci.low, 3) + ", " + format_short(f.ci.high, 3) + "]" + " (" + std::to_string(f.standing) +
                     " standing, " + std::to_string(f.slumped) + " slumped runs)";
+    if (f.determined && f.extrapolated)
+        s += " EXTRAPOLATED (at k-hat most coarse levels lie beyond the fine ones, where the branch is extrapolated; rerun with --offset " +
+             format_short(f.k, 2) + ")";
     if (!f.determined)
         return s + " UNDETERMINED (the likelihood does not close inside k = -2 to 6: the coarse levels do not overlap the fine "
                    "curve where it changes; move --range or --offset)";
@@ -84,8 +87,10 @@ io::Table response_table(const slump::ResponseStudy& study, const std::string& s
         if (const auto why = e.unusable(); !why.empty()) {  // not a point of the curve
             std::vector<io::Cell> row(t.columns.size(), io::Cell(io::not_available));
             row[0] = e.sf, row[1] = e.gamma > 0 ? io::Cell(e.gamma) : io::Cell(io::not_available);
-            row[2] = static_cast<double>(e.measured.size()), row[9] = "UNUSABLE fill, " + why;
+            row[2] = static_cast<double>(e.measured.size()), row[9] = "UNUSABLE fill";
             t.rows.push_back(std::move(row));
+            // The reason goes to the notes: in the column it would widen the printed table past any screen.
+            t.notes.push_back("UNUSABLE fill at S_f " + format_short(e.sf, 3) + ", gamma " + format_short(e.gamma, 4) + " N/m, " + why + " (level not judged)");
             return;
         }
         const auto& s = e.slump_over_height;
@@ -123,14 +128,16 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
     io::Table t;
     t.title = "Measured exponent k-hat of gamma-bar = gamma S_f^k, from the response curves (" + scene_label + ")";
     t.metadata = {{"decides", "the transition model (probit of standing against ln gamma - k ln S_f, and the slumped runs' branch; 95 % "
-                              "profile likelihood interval; docs/exponent-estimate.md)"},
+                              "interval: the profile likelihood's, widened to the seed jackknife's where that is wider; "
+                              "docs/exponent-estimate.md)"},
                   {"beside it", "the means shift: least-squares shift of the coarse means onto the fine curve, 95 % bootstrap over seeds"}};
     t.columns = {"sf", "method", "comparison", "k_hat", "k_low", "k_high", "determined", "k_pass_low", "k_pass_high", "k_pass_low_at_k_hat",
                  "k_pass_high_at_k_hat", "standing_runs", "slumped_runs", "dry_offset_pct_of_height", "split_levels", "rms_at_k_hat",
-                 "rms_at_k1", "rms_at_k2", "rms_at_k3", "groups_inside"};
+                 "rms_at_k1", "rms_at_k2", "rms_at_k3", "groups_inside", "k_low_profile", "k_high_profile", "jackknife_se", "extrapolated"};
     t.headings = {"S_f", "method", "comparison", "k̂", "k low (95 %)", "k high (95 %)", "determined", "k passing from", "k passing to",
                   "k passing from (at k̂)", "k passing to (at k̂)", "standing runs", "slumped runs", "dry offset, % of fill height",
-                  "split levels", "rms at k̂", "rms at k = 1", "rms at k = 2", "rms at k = 3", "similarity groups inside the interval"};
+                  "split levels", "rms at k̂", "rms at k = 1", "rms at k = 2", "rms at k = 3", "similarity groups inside the interval",
+                  "k low (profile)", "k high (profile)", "seed jackknife se of k̂", "extrapolated"};
     const bool corrected = study.has_control();
     const std::string decisive = corrected ? "baseline-corrected" : "raw";
     auto groups_in = [](const stats::Interval& ci, bool determined) {
@@ -151,7 +158,8 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
                               p ? end(p->over_interval.high, p->high_open) : na, p && !p->low_open ? io::Cell(p->at_k_hat.low) : na,
                               p && !p->high_open ? io::Cell(p->at_k_hat.high) : na, static_cast<double>(f.standing),
                               static_cast<double>(f.slumped), std::isnan(offset) ? na : io::Cell(100 * offset), na, na, na, na, na,
-                              groups_in(f.ci, f.determined)});
+                              groups_in(f.ci, f.determined), f.profile_ci.low, f.profile_ci.high,
+                              std::isnan(f.jackknife_se) ? na : io::Cell(f.jackknife_se), f.extrapolated ? "yes" : "no"});
         }
     };
     auto shift_rows = [&](const std::vector<stats::ExponentEstimate>& estimates, const std::string& comparison, bool with_control) {
@@ -165,7 +173,7 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
             t.rows.push_back({sf_label(e), "means shift", comparison, e.k, e.ci.low, e.ci.high, e.determined ? "yes" : "no", na, na, na, na,
                               na, na, e.sf == 0 || !with_control ? na : io::Cell(100 * e.offset), static_cast<double>(e.split_levels), e.rms,
                               stats::shift_residual_rms(fine, cs, 1), stats::shift_residual_rms(fine, cs, 2),
-                              stats::shift_residual_rms(fine, cs, 3), groups_in(e.ci, e.determined)});
+                              stats::shift_residual_rms(fine, cs, 3), groups_in(e.ci, e.determined), na, na, na, na});
         }
     };
     model_rows(study.fits, decisive, true);
@@ -181,6 +189,11 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
                       "nothing passes for the whole interval");
     t.notes.push_back("standing runs: slump below " + format_short(study.stands_below, 3) + " of the fill height; rms (means shift): root mean square difference of the coarse "
                       "means from the shifted fine curve");
+    t.notes.push_back("k low, k high (model): the profile likelihood interval (k low/high profile) or k-hat +- t jackknife_se, whichever "
+                      "reaches further on each side; jackknife_se: k-hat's spread when one seed's runs (every level and the dry control) "
+                      "are left out at a time");
+    t.notes.push_back("extrapolated: at k-hat most of a coarse curve's slumped runs lie beyond the fine levels, where the branch is an "
+                      "extrapolated polynomial; the interval is then not trusted: rerun with --offset near k-hat");
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
     t.notes.push_back("split_levels (means shift): the levels it rests on whose seeds split between the ends of the response; its bootstrap "
                       "interval then understates the uncertainty (the transition model counts such runs as standing and slumped)");
