@@ -74,6 +74,7 @@ int run_estimate(const Options& o) {
         if (!o.runs.empty()) std::cout << "\nruns read from " << display_path(o.runs) << " (none run)";
         std::cout << "\n" << runs << " fine runs at " << study.fine.size() << (study.fine.size() == 1 ? " level" : " levels") << "; " << format_short(study.wall_s, 3)
                   << " s\n";
+        if (study.second_look.any()) std::cout << study.second_look.describe() << "\n";
         if (study.wet) {
             std::cout << "transition model (decides; docs/exponent-estimate.md)" << (study.has_control() ? ", baseline-corrected (the dry control's offset, same seeds)" : "") << ":\n";
             for (std::size_t i = 0; i < study.fits.size(); ++i)

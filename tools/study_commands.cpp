@@ -105,6 +105,7 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
                   << (study.has_control() ? "; " + std::to_string(dry.size()) + " of them the dry control" : std::string()) << "), "
                   << format_short(study.wall_s, 3) << " s of wall time, " << plan.jobs << " job(s) x " << plan.threads_per_job
                   << " thread(s)\n";
+        if (study.second_look.any()) std::cout << study.second_look.describe() << "\n";
         for (const auto& v : study.deciding())
             if (!v.unusable.empty())
                 std::cout << "S_f = " << format_short(v.sf) << ", k = " << format_short(v.exponent) << ": UNUSABLE FILL, not judged ("

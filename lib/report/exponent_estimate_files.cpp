@@ -197,6 +197,7 @@ io::Table exponent_estimate_table(const slump::ResponseStudy& study, const std::
     t.notes.push_back("groups: stress similarity (Eq. 11) k = 1, Bond number F/(m g) k = 2, Table 1's force scaling k = 3");
     t.notes.push_back("split_levels (means shift): the levels it rests on whose seeds split between the ends of the response; its bootstrap "
                       "interval then understates the uncertainty (the transition model counts such runs as standing and slumped)");
+    if (study.second_look.any()) t.notes.push_back(study.second_look.describe());
     return t;
 }
 

@@ -171,6 +171,7 @@ io::Table verdict_numbers(const slump::Study& study, const std::string& scene_la
     std::stable_sort(t.rows.begin(), t.rows.end(), [](const auto& a, const auto& b) {
         return std::tie(std::get<double>(a[0]), std::get<double>(a[1])) < std::tie(std::get<double>(b[0]), std::get<double>(b[1]));
     });
+    if (study.second_look.any()) t.notes.push_back(study.second_look.describe());
     return t;
 }
 

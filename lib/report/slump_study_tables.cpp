@@ -110,6 +110,7 @@ io::Table verdict_table(const slump::Study& study, const std::string& scene_labe
         t.notes.push_back("UNUSABLE FILL: the cone could not hold the scene's mass of these spheres (the pour jammed in the top opening, "
                           "or the fill did not fit under the cone's top): not a column, not judged, not in the overall verdict");
     t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
+    if (study.second_look.any()) t.notes.push_back(study.second_look.describe());
     return t;
 }
 

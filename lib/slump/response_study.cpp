@@ -215,6 +215,7 @@ ResponseStudy run_response_study(const ResponsePlan& plan, const std::function<v
     BatchOptions batch = plan.batch;
     batch.reference_radius_m = plan.fine.radius_m;
     run_batch(all, batch, log);
+    study.second_look = second_look(all);
     const double d0 = plan.fine.bottom_diameter_m;
     for (auto& e : study.fine) measure(e, d0);
     for (auto& levels : study.coarse)

@@ -15,6 +15,7 @@
 
 #include "slump/ensemble_verdict.hpp"
 #include "slump/run_batch.hpp"
+#include "slump/second_look.hpp"
 #include "slump/runs_file.hpp"
 #include "stats/curve_shift.hpp"
 #include "stats/passing_range.hpp"
@@ -73,6 +74,7 @@ struct ResponseStudy {
     bool has_control() const { return !dry_control.empty(); }
     std::vector<stats::SplitLevel> split;               // levels whose seeds split (wet only; stats::split_levels)
     std::vector<DryBaseline> baselines;                 // dry only
+    SecondLook second_look;                             // more seeds added to a study already run (none read from a runs file)
     double wall_s = 0;
 };
 

@@ -74,7 +74,7 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
         if (!o.slurm->wait)
             throw RunsPending(round.summary() + "; run the same command again to collect them (squeue shows the queue)");
         auto results = wait_for_slurm(handed, *cache, *o.slurm, log);
-        for (std::size_t i = 0; i < pending.size(); ++i) pending[i]->result = std::move(results[i]), pending[i]->from_cache = true;
+        for (std::size_t i = 0; i < pending.size(); ++i) pending[i]->result = std::move(results[i]);  // run by this call, on Slurm
         pending.clear();
     }
 

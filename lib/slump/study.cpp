@@ -209,7 +209,7 @@ Study run_study(const StudyPlan& plan, const std::function<void(const std::strin
     // S_f = 1 is the reference for every k; equal scenes run once.
     const auto all = study.all_runs();
     run_batch(all, {plan.jobs, plan.threads_per_job, plan.cache_dir, plan.force_dt, plan.fine.radius_m, plan.live, plan.slurm}, log);
-
+    study.second_look = second_look(all);
     judge_study(study, plan);
     study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return study;

@@ -17,6 +17,7 @@
 #include "slump/comparison.hpp"
 #include "slump/ensemble_verdict.hpp"
 #include "slump/run_batch.hpp"
+#include "slump/second_look.hpp"
 #include "slump/run_cache.hpp"
 
 namespace demscale::slump {
@@ -56,6 +57,7 @@ struct Study {
     FineReference fine;                 // the fine ensemble's means and mean shape
     NoiseFloor noise;                   // the fine ensemble's own spread
     Tolerances tolerances;
+    SecondLook second_look;             // more seeds added to a study already run
     double wall_s = 0;                  // this call's wall time (cached runs cost nothing)
     bool has_control() const { return !dry_fine.empty(); }
     // The verdicts that decide: baseline-corrected with a dry control, else raw.

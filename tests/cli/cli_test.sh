@@ -255,6 +255,10 @@ case $case_name in
     grep -q '0 to run' "$work/out" || fail "second call did not reuse the cached runs"
     expect 4 'verdict: INCONCLUSIVE' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 1 --tol-slump 10 --tol-spread 10 --tol-profile 10
     grep -q 'fewer than two seeds' "$work/out" || fail "INCONCLUSIVE without its reason"
+    # A fourth seed on top of the three cached ones (run before --k-range's levels cache part of it) is a second look (optional stopping): said, and noted in the table.
+    "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 4 --tol-slump 10 --tol-spread 10 --tol-profile 10 >"$work/out" 2>&1
+    grep -q 'SECOND LOOK: every run of seeds .* came from the cache, seed .* is new' "$work/out" || { cat "$work/out" >&2; fail "adding a seed was not called a second look"; }
+    grep -q 'SECOND LOOK' "$work/c/check_k1_verdicts.csv" || fail "the verdict table does not note the second look"
     expect 0 'verdict: PASS' -- "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --tol-slump 10 --tol-spread 10 --tol-profile 10 --baseline none
     grep -q 'dry control' "$work/out" && fail "--baseline none still shows a dry control"
     grep -q 'the raw comparison' "$work/out" || fail "--baseline none does not say the raw comparison decides"

@@ -16,6 +16,7 @@
 #include "slump/fill.hpp"
 #include "slump/response_study.hpp"
 #include "slump/run_cache.hpp"
+#include "slump/second_look.hpp"
 #include "report/slump_study_tables.hpp"
 #include "slump/study.hpp"
 
@@ -479,4 +480,34 @@ TEST_CASE("Response curves: levels a factor apart exactly, coarse gamma-bar = f 
     const auto dry = plan_response_runs(plan);
     CHECK(dry.fine.size() == 1);
     CHECK(dry.coarse.at(1).size() == 1);
+}
+
+TEST_CASE("Second look: seeds added to cached ones are named, a rerun or a resumed study is not one", "[slump][study]") {
+    // Runs as (seed, from the cache); two runs per seed, as fine and coarse.
+    auto batch = [](std::vector<std::pair<unsigned, bool>> spec) {
+        std::vector<slump::StudyRun> runs(spec.size());
+        for (std::size_t i = 0; i < spec.size(); ++i) runs[i].scene.seed = spec[i].first, runs[i].from_cache = spec[i].second;
+        return runs;
+    };
+    auto look = [](std::vector<slump::StudyRun>& runs) {
+        std::vector<slump::StudyRun*> p;
+        for (auto& r : runs) p.push_back(&r);
+        return slump::second_look(p);
+    };
+    auto more = batch({{1, true}, {1, true}, {2, true}, {2, true}, {3, false}, {3, false}});
+    const auto added = look(more);
+    REQUIRE(added.any());
+    CHECK(added.earlier == std::vector<unsigned>{1, 2});
+    CHECK(added.added == std::vector<unsigned>{3});
+    CHECK(added.describe().find("seeds 1-2 came from the cache, seed 3 is new") != std::string::npos);
+    auto rerun = batch({{1, true}, {1, true}, {2, true}, {2, true}});
+    CHECK_FALSE(look(rerun).any());
+    CHECK(look(rerun).describe().empty());
+    auto fresh = batch({{1, false}, {2, false}});
+    CHECK_FALSE(look(fresh).any());
+    // Interrupted and resumed: seed 2 half done before, seed 3 not at all; not more seeds.
+    auto resumed = batch({{1, true}, {1, true}, {2, true}, {2, false}, {3, false}, {3, false}});
+    CHECK_FALSE(look(resumed).any());
+    auto scattered = batch({{5, true}, {9, true}, {7, false}});
+    CHECK(look(scattered).describe().find("seeds 5, 9 came from the cache, seed 7 is new") != std::string::npos);
 }
