@@ -13,6 +13,8 @@
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
 #include "report/similarity_table.hpp"
+#include "io/atomic_file.hpp"
+#include "slump/runs_verdict.hpp"
 #include "stats/verdict.hpp"
 
 namespace demscale::cli {
@@ -27,6 +29,7 @@ struct Options {
     std::optional<double> tol_slump, tol_spread, tol_profile;  // unset: the scene's [check]
     int seeds = 8;
     bool k_range = false;
+    std::string runs;  // check-exponent: a runs file to judge instead of running
     StudyRunOptions run;
 };
 
@@ -151,6 +154,39 @@ void print_k_range(const Options& o, const slump::StudyPlan& plan, const slump::
     for (const auto& f : files.written) std::cerr << "wrote " << f.string() << "\n";
 }
 
+// check-exponent --runs: the verdict on a runs file, slump and spread (such a file holds no profiles);
+// nothing runs. Exit codes as for the runs themselves.
+int check_runs_file(const Options& o) {
+    if (o.k_range) throw InputError("--k-range", "given with --runs", "without --runs (estimate-exponent --runs FILE judges the response curves)");
+    const auto plan = plan_from(o, "--exponent");
+    if (plan.exponents.size() != 1) throw InputError("--exponent", o.exponents, "one number");
+    const auto format = io::parse_format(o.run.format, "--format");
+    const auto rows = slump::read_runs_file(o.runs, plan.fine.liquid.surface_tension_n_per_m);
+    const auto verdicts = slump::judge_runs(rows, display_path(o.runs), plan.fine.liquid.surface_tension_n_per_m, plan.exponents.front(),
+                                            o.sfs.empty() ? std::vector<double>{} : plan.scale_factors, plan.tolerances, plan.baseline);
+    const std::string label = display_path(o.scene);
+    const auto table = report::verdict_table(verdicts, label, display_path(o.runs));
+    const auto path = std::filesystem::path(o.run.out_dir) / ("check_k" + format_short(plan.exponents.front()) + "_from_runs.csv");
+    io::write_file_atomically(path, io::render(table, io::Format::csv));
+    const auto overall = verdicts.overall();
+    if (format == io::Format::json) {
+        nlohmann::ordered_json out;
+        out["verdict"] = stats::verdict_name(overall);
+        out["tables"] = nlohmann::ordered_json::parse(join_tables({table}, format));
+        std::cout << out.dump(2) << "\n";
+    } else {
+        std::cout << join_tables({table}, format);
+        std::size_t n[3] = {0, 0, 0};
+        for (const auto& v : verdicts.deciding())
+            if (v.unusable.empty()) ++n[static_cast<int>(v.overall)];
+        std::cout << "\nruns read from " << display_path(o.runs) << " (none run; slump and spread judged, the profile not: no profiles in a runs file)\n"
+                  << "verdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
+                  << " INCONCLUSIVE of " << n[0] + n[1] + n[2] << " judged S_f" << (verdicts.has_control() ? ", baseline-corrected" : ", raw") << "\n";
+    }
+    std::cerr << "wrote " << path.string() << "\n";
+    return overall == stats::Verdict::pass ? 0 : overall == stats::Verdict::fail ? 1 : 4;
+}
+
 void add_common(CLI::App* c, Options& o) {
     c->add_option("--scene", o.scene, "scene TOML (default: data/scenes/kantro_wet.toml)");
     c->add_option("--sf", o.sfs,
@@ -174,6 +210,9 @@ std::vector<Command> study_commands(CLI::App& app) {
     auto* c = app.add_subcommand("check-exponent",
                                  "slump test of coarse ensembles (gamma S_f^k) against the fine ensemble; exit 0 PASS, 1 FAIL, 4 INCONCLUSIVE");
     c->add_option("--exponent", check->exponents, "the candidate k")->required();
+    c->add_option("--runs", check->runs,
+                  "judge the runs in this CSV instead of running (docs/file-formats.md, runs file; slump and spread only: "
+                  "a runs file holds no profiles)");
     add_common(c, *check);
 
     auto sweep = std::make_shared<Options>();
@@ -184,6 +223,7 @@ std::vector<Command> study_commands(CLI::App& app) {
 
     return {{c,
              [check] {
+                 if (!check->runs.empty()) return check_runs_file(*check);
                  const auto plan = plan_from(*check, "--exponent");
                  if (plan.exponents.size() != 1) throw InputError("--exponent", check->exponents, "one number (use sweep for several)");
                  const auto study = run(plan);

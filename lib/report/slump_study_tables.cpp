@@ -47,10 +47,15 @@ std::vector<io::Cell> verdict_row(const slump::EnsembleVerdict& v, const std::st
                 io::Cell(io::not_available), "UNUSABLE FILL", io::Cell(io::not_available), v.unusable + " (not judged)"};
     std::string smallest, notes;
     std::vector<io::Cell> row = {v.sf, v.exponent, comparison, static_cast<double>(v.coarse_seeds)};
-    for (const auto& c : v.criteria) {
-        row.push_back(interval_pct(c.estimate, c.interval) + " " + stats::verdict_name(c.verdict));
-        smallest += (smallest.empty() ? "" : " / ") + format_short(100 * c.smallest_tolerance, 3);
-        if (!c.reason.empty()) notes += c.measure + ": " + c.reason + "; ";
+    for (const char* measure : {"slump", "spread", "profile"}) {
+        const auto c = std::find_if(v.criteria.begin(), v.criteria.end(), [&](const auto& x) { return x.measure == measure; });
+        if (c == v.criteria.end()) {  // a runs file's verdict: no profiles
+            row.push_back("not judged");
+            continue;
+        }
+        row.push_back(interval_pct(c->estimate, c->interval) + " " + stats::verdict_name(c->verdict));
+        smallest += (smallest.empty() ? "" : " / ") + format_short(100 * c->smallest_tolerance, 3);
+        if (!c->reason.empty()) notes += c->measure + ": " + c->reason + "; ";
     }
     for (const auto& w : v.warnings) notes += w + "; ";
     if (!notes.empty()) notes.resize(notes.size() - 2);
@@ -60,35 +65,66 @@ std::vector<io::Cell> verdict_row(const slump::EnsembleVerdict& v, const std::st
     return row;
 }
 
-}  // namespace
+// The verdict table's rows and common notes: raw, and with a control the baseline-corrected verdict
+// (which decides) and the dry control, the latter once per dry scene (show_control).
+struct VerdictRows {
+    const std::vector<slump::EnsembleVerdict>& raw;
+    const std::vector<slump::EnsembleVerdict>& corrected;  // empty: no control
+    const std::vector<slump::EnsembleVerdict>& controls;
+    std::vector<bool> show_control;                          // per entry of raw
+    slump::Tolerances tolerances;
+    stats::Verdict overall;
+};
 
-io::Table verdict_table(const slump::Study& study, const std::string& scene_label) {
+io::Table verdict_table_of(const VerdictRows& v, const std::string& scene_label, const std::string& profile_note) {
+    const bool control = !v.corrected.empty();
     io::Table t;
     t.title = "Verdict per scale factor and exponent: coarse ensemble against the fine ensemble (" + scene_label + ")";
-    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(study.tolerances)}};
+    t.metadata = {{"scene", scene_label}, {"tolerances", tolerances_text(v.tolerances)}};
     // One verdict over all rows means something for one candidate k (check-exponent), not across several.
-    const bool one_exponent = std::all_of(study.verdicts.begin(), study.verdicts.end(),
-                                          [&](const auto& v) { return v.exponent == study.verdicts.front().exponent; });
-    if (one_exponent) t.metadata.push_back({"overall", stats::verdict_name(study.overall())});
-    t.metadata.push_back({"decides", study.has_control() ? "the baseline-corrected comparison (dry control of the same seeds removed)"
-                                                         : "the raw comparison (--baseline none, or a dry scene: no baseline runs)"});
+    const bool one_exponent = std::all_of(v.raw.begin(), v.raw.end(), [&](const auto& e) { return e.exponent == v.raw.front().exponent; });
+    if (one_exponent) t.metadata.push_back({"overall", stats::verdict_name(v.overall)});
+    t.metadata.push_back({"decides", control ? "the baseline-corrected comparison (dry control of the same seeds removed)"
+                                             : "the raw comparison (--baseline none, or a dry scene: no baseline runs)"});
     t.columns = {"sf", "exponent", "comparison", "seeds", "slump_diff_pct_of_height", "spread_diff_pct", "profile_distance_pct", "verdict",
                  "smallest_tolerances_pct", "notes"};
     t.headings = {"S_f", "k", "comparison", "seeds", "slump difference, % of fill height [95 % interval]",
                   "spread difference, % [95 % interval]", "profile distance, % [95 % interval]", "verdict",
                   "smallest tolerances these data confirm, % (slump / spread / profile)", "notes"};
-    std::set<std::string> dry_shown;  // run keys (run_batch sets them)
-    for (std::size_t i = 0; i < study.verdicts.size(); ++i) {
-        t.rows.push_back(verdict_row(study.verdicts[i], "raw", !study.has_control()));
-        if (!study.has_control() || !study.verdicts[i].unusable.empty()) continue;
-        t.rows.push_back(verdict_row(study.corrected[i], "baseline-corrected", true));
-        // The dry control once per S_f when the dry scenes of several k are one (nothing else scaled).
-        if (dry_shown.insert(study.dry_coarse[i].front().key).second) {
-            auto row = verdict_row(study.controls[i], "dry control", false);
+    for (std::size_t i = 0; i < v.raw.size(); ++i) {
+        t.rows.push_back(verdict_row(v.raw[i], "raw", !control));
+        if (!control || !v.raw[i].unusable.empty()) continue;
+        t.rows.push_back(verdict_row(v.corrected[i], "baseline-corrected", true));
+        if (v.show_control[i]) {
+            auto row = verdict_row(v.controls[i], "dry control", false);
             row[1] = io::Cell(io::not_available);
             t.rows.push_back(std::move(row));
         }
     }
+    t.notes.push_back("each cell: estimate [95 % interval], in %; slump as (coarse - fine) mean slump over the fill height, Welch t; "
+                      "spread (diameter at half height) as the difference of means over the fine mean, Welch t; " + profile_note);
+    if (control)
+        t.notes.push_back("raw: the wet ensembles as they are; baseline-corrected: each seed's wet value less its dry twin's, coarse "
+                          "against fine (profile: the wet-minus-dry mean shapes), which removes the offset the same S_f shows without "
+                          "liquid; dry control: the dry coarse ensemble against the dry fine one, that offset itself (docs/verdicts.md)");
+    if (std::any_of(v.raw.begin(), v.raw.end(), [](const auto& e) { return !e.unusable.empty(); }))
+        t.notes.push_back("UNUSABLE FILL: the cone could not hold the scene's mass of these spheres (the pour jammed in the top opening, "
+                          "or the fill did not fit under the cone's top): not a column, not judged, not in the overall verdict");
+    t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
+    return t;
+}
+
+}  // namespace
+
+io::Table verdict_table(const slump::Study& study, const std::string& scene_label) {
+    // The dry control once per S_f when the dry scenes of several k are one (nothing else scaled).
+    std::vector<bool> show(study.verdicts.size(), false);
+    std::set<std::string> dry_shown;  // run keys (run_batch sets them)
+    if (study.has_control())
+        for (std::size_t i = 0; i < study.verdicts.size(); ++i)
+            show[i] = study.verdicts[i].unusable.empty() && dry_shown.insert(study.dry_coarse[i].front().key).second;
+    auto t = verdict_table_of({study.verdicts, study.corrected, study.controls, show, study.tolerances, study.overall()}, scene_label,
+                              "profile as the distance between the mean shapes, bootstrap over seeds");
     for (const auto& l : study.limited) {
         std::string why;
         for (const auto& r : l.reasons) why += (why.empty() ? "" : "; ") + r;
@@ -99,18 +135,15 @@ io::Table verdict_table(const slump::Study& study, const std::string& scene_labe
         t.notes.push_back("GEOMETRY-LIMITED: the coarse scene is below the scene's [check] limits (top opening, fill height in particle "
                           "diameters, spheres per fill), so the cone rather than the exponent decides its runs; it is neither PASS nor "
                           "FAIL and does not enter the overall verdict");
-    t.notes.push_back("each cell: estimate [95 % interval], in %; slump as (coarse - fine) mean slump over the fill height, Welch t; "
-                      "spread (diameter at half height) as the difference of means over the fine mean, Welch t; profile as the distance between the mean "
-                      "shapes, bootstrap over seeds");
-    if (study.has_control())
-        t.notes.push_back("raw: the wet ensembles as they are; baseline-corrected: each seed's wet value less its dry twin's, coarse "
-                          "against fine (profile: the wet-minus-dry mean shapes), which removes the offset the same S_f shows without "
-                          "liquid; dry control: the dry coarse ensemble against the dry fine one, that offset itself (docs/verdicts.md)");
-    if (std::any_of(study.verdicts.begin(), study.verdicts.end(), [](const auto& v) { return !v.unusable.empty(); }))
-        t.notes.push_back("UNUSABLE FILL: the cone could not hold the scene's mass of these spheres (the pour jammed in the top opening, "
-                          "or the fill did not fit under the cone's top): not a column, not judged, not in the overall verdict");
-    t.notes.push_back("PASS: the interval lies inside the tolerance; FAIL: wholly outside it; INCONCLUSIVE: neither (more seeds narrow it)");
     if (study.second_look.any()) t.notes.push_back(study.second_look.describe());
+    return t;
+}
+
+io::Table verdict_table(const slump::RunsVerdicts& verdicts, const std::string& scene_label, const std::string& source) {
+    auto t = verdict_table_of({verdicts.raw, verdicts.corrected, verdicts.controls, std::vector<bool>(verdicts.raw.size(), true),
+                               verdicts.tolerances, verdicts.overall()},
+                              scene_label, "profile not judged: a runs file holds no profiles, so the verdict rests on slump and spread");
+    t.metadata.push_back({"runs", source});
     return t;
 }
 

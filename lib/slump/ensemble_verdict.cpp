@@ -41,6 +41,38 @@ NoiseFloor noise_floor(const std::vector<const SlumpResult*>& fine, const FineRe
 
 double slump_over_height(const SlumpResult& r) { return r.slump() / r.initial_height; }
 
+Criterion difference_criterion(const std::string& measure, const std::vector<double>& fine, const std::vector<double>& coarse,
+                               double scale, double tolerance) {
+    const auto d = stats::difference_interval(fine, coarse);
+    const stats::Interval interval{d.low / scale, d.high / scale};
+    Criterion c{measure, (stats::summarize(coarse).mean - stats::summarize(fine).mean) / scale, interval, tolerance,
+                stats::equivalence_verdict(interval, tolerance), stats::smallest_confirmable_tolerance(interval), ""};
+    if (fine.size() < 2 || coarse.size() < 2) c.verdict = stats::Verdict::inconclusive, c.reason = "fewer than two seeds on a side: no interval";
+    return c;
+}
+
+std::size_t family_size(const std::vector<EnsembleVerdict>& deciding) {
+    std::size_t m = 0;
+    for (const auto& e : deciding)
+        if (e.unusable.empty()) m += e.criteria.size();
+    return m;
+}
+
+stats::Verdict family_verdict(const std::vector<EnsembleVerdict>& deciding) {
+    std::vector<stats::Verdict> v;
+    for (const auto& e : deciding)
+        if (e.unusable.empty()) v.push_back(e.overall);
+    if (v.empty()) return stats::Verdict::inconclusive;
+    const stats::Verdict worst = stats::combine(v);
+    if (worst != stats::Verdict::fail) return worst;
+    const std::size_t m = family_size(deciding);
+    for (const auto& e : deciding)
+        if (e.unusable.empty())
+            for (const auto& c : e.criteria)
+                if (c.reason.empty() && stats::fails_in_family(c.estimate, c.interval, c.tolerance, m)) return stats::Verdict::fail;
+    return stats::Verdict::inconclusive;  // every FAIL is one a family of m tests draws by chance too often
+}
+
 EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, const std::vector<const SlumpResult*>& coarse,
                                double sf, double exponent, const Tolerances& tol, double fine_radius, bool wet,
                                const DryControl* control) {
@@ -75,8 +107,8 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
     const auto* dry_fine = control ? &control->fine : nullptr;
     const auto* dry_coarse = control ? &control->coarse : nullptr;
     // Slump over H₀, absolute.
-    const auto fs = seedwise(fine, dry_fine, slump_over_height), cs = seedwise(coarse, dry_coarse, slump_over_height);
-    auto slump = criterion("slump", stats::summarize(cs).mean - stats::summarize(fs).mean, stats::difference_interval(fs, cs), tol.slump);
+    auto slump = difference_criterion("slump", seedwise(fine, dry_fine, slump_over_height), seedwise(coarse, dry_coarse, slump_over_height),
+                                      1, tol.slump);
     double fine_slump = 0;
     for (const auto* r : fine) fine_slump += r->slump() / static_cast<double>(fine.size());
     if (fine_slump < 2 * sf * fine_radius) {
@@ -87,9 +119,7 @@ EnsembleVerdict judge_ensemble(const std::vector<const SlumpResult*>& fine, cons
     // Spread (diameter at half height), relative to the fine mean.
     const auto fd = seedwise(fine, dry_fine, spread), cd = seedwise(coarse, dry_coarse, spread);
     const double mean_fd = stats::summarize(values(fine, spread)).mean;
-    const auto dd = stats::difference_interval(fd, cd);
-    auto spread = criterion("spread", (stats::summarize(cd).mean - stats::summarize(fd).mean) / mean_fd, {dd.low / mean_fd, dd.high / mean_fd},
-                            tol.spread);
+    auto spread = difference_criterion("spread", fd, cd, mean_fd, tol.spread);
     // Profile: distance of the mean shapes, bootstrapped.
     const double level = fringe_level(fine.front()->final, coarse.front()->final);
     auto shapes_of = [&](const std::vector<const SlumpResult*>& runs, const std::vector<const SlumpResult*>* dry) {

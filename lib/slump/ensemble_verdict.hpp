@@ -63,6 +63,19 @@ struct DryControl {
 // Slump over the fill height, s/H₀: the scale-free slump every comparison uses.
 double slump_over_height(const SlumpResult& r);
 
+// A difference of means judged for equivalence: Welch t interval of mean(coarse) − mean(fine), both
+// over scale (1: absolute; the fine mean: relative), against ±tolerance; INCONCLUSIVE with its
+// reason when a side has fewer than two seeds. The slump and spread criteria of judge_ensemble and
+// of a runs file (slump/runs_verdict.hpp) alike.
+Criterion difference_criterion(const std::string& measure, const std::vector<double>& fine, const std::vector<double>& coarse,
+                               double scale, double tolerance);
+
+// Over the ensembles that decide (unusable ones left out): PASS if every one passes (an
+// intersection-union test), FAIL if some criterion fails at the family's level (stats::fails_in_family,
+// m = family_size), else INCONCLUSIVE, as when none was judged (docs/verdicts.md, "Levels of the test").
+stats::Verdict family_verdict(const std::vector<EnsembleVerdict>& deciding);
+std::size_t family_size(const std::vector<EnsembleVerdict>& deciding);
+
 // fine_radius: m. wet: false adds the note that k has no effect.
 // control: judge the offset-corrected difference (see above); its ensembles must match fine and
 // coarse seed for seed (std::invalid_argument otherwise).

@@ -9,27 +9,9 @@
 
 namespace demscale::slump {
 
-std::size_t Study::family_size() const {
-    std::size_t m = 0;
-    for (const auto& e : deciding())
-        if (e.unusable.empty()) m += e.criteria.size();
-    return m;
-}
+std::size_t Study::family_size() const { return slump::family_size(deciding()); }
 
-stats::Verdict Study::overall() const {
-    std::vector<stats::Verdict> v;
-    for (const auto& e : deciding())
-        if (e.unusable.empty()) v.push_back(e.overall);
-    if (v.empty()) return stats::Verdict::inconclusive;
-    const stats::Verdict worst = stats::combine(v);
-    if (worst != stats::Verdict::fail) return worst;
-    const std::size_t m = family_size();
-    for (const auto& e : deciding())
-        if (e.unusable.empty())
-            for (const auto& c : e.criteria)
-                if (c.reason.empty() && stats::fails_in_family(c.estimate, c.interval, c.tolerance, m)) return stats::Verdict::fail;
-    return stats::Verdict::inconclusive;  // every FAIL is one a family of m tests draws by chance too often
-}
+stats::Verdict Study::overall() const { return family_verdict(deciding()); }
 
 std::vector<double> Study::judged_scale_factors() const {
     std::vector<double> sfs;

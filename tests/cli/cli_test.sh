@@ -273,7 +273,19 @@ case $case_name in
     grep -q '^  S_f = 1.4: k-hat = .*\[' "$work/out" || { cat "$work/out" >&2; fail "--k-range printed no k-hat"; }
     grep -q 'range of k that passes' "$work/out" || fail "--k-range did not say what it prints"
     [ -s "$work/c/estimate_exponent.csv" ] || fail "--k-range wrote no estimate"
-    grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts" ;;
+    grep -qi 'nan\|inf' "$work/c/check_k1_verdicts.csv" && fail "NaN or inf in the verdicts"
+    # --runs: the study's own runs file judged without running gives the same slump and spread cells.
+    "$demscale" check-exponent --exponent 1 "${small[@]}" --seeds 3 --format csv >"$work/ran.csv" 2>/dev/null
+    cp "$work/c/check_k1_runs.csv" "$work/runs.csv"
+    "$demscale" check-exponent --exponent 1 --runs "$work/runs.csv" --scene "$src/data/scenes/small_wet.toml" --out "$work/fr" >"$work/out" 2>&1
+    case $? in 0 | 1 | 4) ;; *) cat "$work/out" >&2; fail "check-exponent --runs failed" ;; esac
+    grep -q 'none run; slump and spread judged' "$work/out" || fail "--runs did not say what it judged"
+    for comparison in raw baseline-corrected; do
+      a=$(grep "^1.4,1,$comparison," "$work/ran.csv" | cut -d, -f5,6)
+      b=$(grep -v '^#' "$work/fr/check_k1_from_runs.csv" | grep "^1.4,1,$comparison," | cut -d, -f5,6)
+      [ -n "$a" ] && [ "$a" = "$b" ] || fail "$comparison: the runs give '$b', the runs file '$a'"
+    done
+    grep -q '^1.4,1,raw,3,.*,not judged,' "$work/fr/check_k1_from_runs.csv" || fail "the profile is not marked not judged" ;;
   check_exponent_bad_input_exit_2)
     expect 2 '--sf = "0".*\(0, 100\)' -- "$demscale" check-exponent --exponent 1 --sf 0 --out "$work/c"
     expect 2 '--scale = stiffness' -- "$demscale" check-exponent --exponent 1 --scale stiffness --out "$work/c"
@@ -340,6 +352,11 @@ case $case_name in
     printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n1,0.07,1,0.5,1.2\n1,0.07,1,0.4,1.2\n' >"$work/bad_runs.csv"
     expect 2 'bad_runs.csv:3.*each run once' -- "$demscale" estimate-exponent --runs "$work/bad_runs.csv" --out "$work/e"
     expect 2 'no_such.csv' -- "$demscale" estimate-exponent --runs "$work/no_such.csv" --out "$work/e"
+    printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n1,0.074,1,0.5,1.2\n1,0.074,2,0.52,1.2\n1.4,0.1036,1,0.5,1.2\n' >"$work/bad_runs.csv"
+    expect 2 '--runs = .*coarse runs at S_f 1.96' -- "$demscale" check-exponent --exponent 1 --sf 1.4,1.96 --runs "$work/bad_runs.csv" --out "$work/e"
+    expect 2 '--k-range = given with --runs' -- "$demscale" check-exponent --exponent 1 --k-range --runs "$work/bad_runs.csv" --out "$work/e"
+    printf 'sf,gamma_n_per_m,seed,slump_over_height,spread_over_d0\n1,0.07,1,0.5,1.2\n1,0.07,2,abc,1.2\n' >"$work/bad_runs.csv"
+    expect 2 'bad_runs.csv:3:4 \(slump_over_height\) = abc' -- "$demscale" check-exponent --exponent 1 --runs "$work/bad_runs.csv" --out "$work/e"
     [ ! -e "$work/e" ] || fail "a refused estimate created output" ;;
   report_quick_structure)
     expect 0 'wrote .*report.html' -- "$demscale" report --quick --out "$work/r" --cache "$work/cache"

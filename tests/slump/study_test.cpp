@@ -16,6 +16,7 @@
 #include "slump/fill.hpp"
 #include "slump/response_study.hpp"
 #include "slump/run_cache.hpp"
+#include "slump/runs_verdict.hpp"
 #include "slump/second_look.hpp"
 #include "report/slump_study_tables.hpp"
 #include "slump/study.hpp"
@@ -510,4 +511,47 @@ TEST_CASE("Second look: seeds added to cached ones are named, a rerun or a resum
     CHECK_FALSE(look(resumed).any());
     auto scattered = batch({{5, true}, {9, true}, {7, false}});
     CHECK(look(scattered).describe().find("seeds 5, 9 came from the cache, seed 7 is new") != std::string::npos);
+}
+
+TEST_CASE("Verdicts on a runs file: Welch t by hand, the dry twins removed, missing runs refused", "[slump][study][runs]") {
+    // Fine slump/height 0.50, 0.52, 0.54 and coarse 0.51, 0.53, 0.55 (γ̄ = γ S_f at k = 1): difference
+    // 0.01, both sd 0.02, se = 0.02 sqrt(2/3) = 0.016330, Welch dof 4, t = 2.7764: [-0.035339, 0.055339].
+    const double gamma = 0.074, sf = 1.4;
+    std::vector<slump::RunRow> rows;
+    auto add = [&](double s, double g, long seed, double slump, double spread) { rows.push_back({s, g, seed, slump, spread, true, ""}); };
+    for (long i = 0; i < 3; ++i) {
+        add(1, gamma, i, 0.50 + 0.02 * static_cast<double>(i), 1.2 + 0.1 * static_cast<double>(i));
+        add(sf, gamma * sf, i, 0.51 + 0.02 * static_cast<double>(i), 1.3 + 0.1 * static_cast<double>(i));
+        add(sf, gamma * sf * sf, i, 0.2, 1.0);  // k = 2's level: not this ensemble
+        add(1, 0, i, 0.70, 1.5);
+        add(sf, 0, i, 0.72, 1.5);
+    }
+    slump::Tolerances tol{0.05, 0.10, 0.15};
+    const auto raw = slump::judge_runs(rows, "runs.csv", gamma, 1, {}, tol, slump::Baseline::none);
+    REQUIRE(raw.raw.size() == 1);
+    REQUIRE_FALSE(raw.has_control());
+    const auto& slump = raw.raw[0].criteria.at(0);
+    CHECK(slump.estimate == Approx(0.01).margin(1e-15));
+    CHECK(slump.interval.low == Approx(-0.035339).margin(2e-6));
+    CHECK(slump.interval.high == Approx(0.055339).margin(2e-6));
+    CHECK(slump.verdict == stats::Verdict::inconclusive);  // 0.0553 reaches past 0.05
+    // Spread relative to the fine mean 1.3: difference 0.1 / 1.3, same se shape (sd 0.1): half-width 0.22665 / 1.3.
+    const auto& spread = raw.raw[0].criteria.at(1);
+    CHECK(spread.estimate == Approx(0.1 / 1.3).epsilon(1e-12));
+    CHECK(spread.interval.high - spread.estimate == Approx(2.7764 * 0.1 * std::sqrt(2.0 / 3) / 1.3).epsilon(1e-4));
+    CHECK(raw.raw[0].criteria.size() == 2);  // no profile in a runs file
+    CHECK(raw.overall() == stats::Verdict::inconclusive);
+    // Against the dry control: each seed less its twin, so the coarse side moves by -0.02.
+    const auto corrected = slump::judge_runs(rows, "runs.csv", gamma, 1, {}, tol, slump::Baseline::dry);
+    REQUIRE(corrected.has_control());
+    CHECK(corrected.corrected[0].criteria[0].estimate == Approx(-0.01).margin(1e-12));
+    CHECK(corrected.controls[0].criteria[0].estimate == Approx(0.02).margin(1e-12));
+    tol.slump = 0.06;
+    CHECK(slump::judge_runs(rows, "runs.csv", gamma, 1, {}, tol, slump::Baseline::none).raw[0].criteria[0].verdict == stats::Verdict::pass);
+    // Refused: an S_f without runs at γ S_f^k, and a wet seed without its dry twin.
+    CHECK_THROWS_WITH(slump::judge_runs(rows, "runs.csv", gamma, 1, {1.96}, tol, slump::Baseline::none),
+                      Catch::Contains("coarse runs at S_f 1.96"));
+    CHECK_THROWS_WITH(slump::judge_runs(rows, "runs.csv", gamma, 1.5, {}, tol, slump::Baseline::none), Catch::Contains("k = 1.5"));
+    rows.pop_back();  // seed 2's dry coarse run
+    CHECK_THROWS_WITH(slump::judge_runs(rows, "runs.csv", gamma, 1, {}, tol, slump::Baseline::dry), Catch::Contains("for seed 2"));
 }
