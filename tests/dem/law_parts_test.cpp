@@ -1,7 +1,7 @@
 // The law parts' declarations: each table against independent sources (the struct defaults, the
 // similarity catalogue's dimensions, a hand derivation of the viscous time step), and the promise
 // that a parameter added to a table reaches the scene reader, the cache key and the report with no
-// other edit.
+// other edit; and the scene-file reference (docs/file-formats.md) quoting each default as the table has it.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -126,4 +126,27 @@ TEST_CASE("A parameter added to a law's table reaches the scene reader, the cach
         if (std::get<std::string>(row[0]) == "linear spring stiffness k")
             listed = std::get<double>(row[1]) == 1234 && std::get<std::string>(row[2]) == "N/m";
     CHECK(listed);
+}
+
+TEST_CASE("docs/file-formats.md lists every law parameter with the default its table declares", "[dem][parameters][docs]") {
+    std::ifstream in(std::string(DEMSCALE_SOURCE_DIR) + "/docs/file-formats.md");
+    REQUIRE(in);
+    std::string line, page;
+    while (std::getline(in, line)) page += line + "\n";
+    for (const auto& part : law_parts())
+        for (const auto& p : part.parameters) {
+            INFO(p.key);
+            // | `contact.rolling_damping` | 1 | 0.3 (epsd), else 0 | ...: the third cell starts with the default.
+            const auto row = page.find("| `" + std::string(p.key) + "` |");
+            REQUIRE(row != std::string::npos);
+            const auto cells = page.substr(row, page.find('\n', row) - row);
+            std::size_t bar = 0;
+            for (int i = 0; i < 2; ++i) bar = cells.find('|', bar + 1);  // past the key and the unit
+            const std::string quoted = cells.substr(bar + 1);
+            char* end = nullptr;
+            const double documented = std::strtod(quoted.c_str(), &end);
+            INFO("documented: " << quoted.substr(0, quoted.find('|')));
+            REQUIRE(end != quoted.c_str());
+            CHECK(documented == Approx(p.default_value).epsilon(1e-12).margin(1e-300));
+        }
 }
