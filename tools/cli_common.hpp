@@ -131,7 +131,8 @@ ProgressOutput progress_output(const std::string& prefix);
 std::function<void(int, int)> progress_printer(const std::string& what);
 
 std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regress, scaling
-std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error, bench
+std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error
+std::vector<Command> bench_commands(CLI::App& app);       // bench
 std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts, pile
 std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
 std::vector<Command> estimate_commands(CLI::App& app);    // estimate-exponent

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     auto commands = cli::similarity_commands(app);
     for (auto& c : cli::bridge_commands(app)) commands.push_back(std::move(c));
+    for (auto& c : cli::bench_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::slump_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::study_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::estimate_commands(app)) commands.push_back(std::move(c));
