@@ -176,6 +176,205 @@ void add_estimate_section(const slump::ResponseStudy& est, const slump::Response
         for (const auto& e : levels) not_at_rest(e);
 }
 
+// The study's plan, and the estimate's with --estimate, both checked before any file is written.
+slump::StudyPlan study_plan(const ReportOptions& o, const slump::SlumpScene& scene, const std::vector<double>& ks) {
+    slump::StudyPlan plan;
+    plan.fine = scene;
+    plan.exponents = ks;
+    plan.scale_factors = o.scale_factors;
+    plan.tolerances = scene.tolerances;
+    plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
+    plan.cache_dir = o.cache_dir;
+    plan.slurm = o.slurm;
+    plan.seeds = o.seeds;
+    plan.baseline = o.baseline;
+    plan.live = o.live;
+    slump::validate_plan(plan);
+    return plan;
+}
+
+std::optional<slump::ResponsePlan> response_plan(const ReportOptions& o, const slump::SlumpScene& scene) {
+    if (!o.estimate) return std::nullopt;
+    slump::ResponsePlan response = *o.estimate;
+    response.fine = scene;
+    response.batch.jobs = o.jobs, response.batch.threads_per_job = o.threads_per_job, response.batch.cache_dir = o.cache_dir;
+    response.batch.slurm = o.slurm;
+    response.batch.live = o.live;
+    slump::validate_response_plan(response);
+    return response;
+}
+
+// On Slurm, every slump run of the report goes in one submission and comes back in one call,
+// before anything is written; the sections then read them all from the cache.
+void run_all_on_slurm(const ReportOptions& o, const slump::StudyPlan& plan, const std::optional<slump::ResponsePlan>& response,
+                      const std::function<void(const std::string&)>& say) {
+    auto study_runs = slump::plan_study(plan);
+    auto all = study_runs.all_runs();
+    std::optional<slump::ResponseStudy> response_runs;
+    if (response) {
+        response_runs = slump::plan_response_runs(*response);
+        for (auto* r : response_runs->all_runs()) all.push_back(r);
+    }
+    slump::run_batch(all, {o.jobs, o.threads_per_job, o.cache_dir, plan.force_dt, plan.fine.radius_m, o.live, o.slurm},
+                     [&](const std::string& s) { say("slump: " + s); });
+}
+
+Section similarity_section(const io::TableConfig& config, const std::vector<double>& ks) {
+    Section similarity{"Similarity table", {}};
+    similarity.blocks.push_back(Paragraph{"Table 1 of Yun & Park (2017) recomputed from " + config.source +
+                                          ": every scaled radius, its mass, liquid volume (Eq. 5), Mikami coefficients "
+                                          "(Eqs. 6-8), contact force and the stress of Eq. 11 for each exponent k."});
+    similarity.blocks.push_back(TableBlock{similarity_table(config, ks)});
+    similarity.blocks.push_back(Paragraph{"Which similarity groups each candidate exponent keeps (exponent 0) or breaks, from the "
+                                          "dimensional algebra of Feng et al. (2009) with S_L = S_f and S_rho = 1:"});
+    similarity.blocks.push_back(TableBlock{similarity_groups_table(ks)});
+    return similarity;
+}
+
+Section curves_section(const io::TableConfig& config, const std::vector<double>& ks, const fs::path& figures) {
+    Section curves{"Curves: Figs. 3 and 4", {}};
+    for (auto fig : {Figure::force, Figure::stress}) {
+        const auto files = write_curve_files(config, fig, ks, figures, true);
+        curves.blocks.push_back(FigureBlock{files.png, fig == Figure::force
+                                                           ? "Fig. 3: dimensionless capillary force against dimensionless gap, every radius"
+                                                           : "Fig. 4: bridge stress of Eq. 11 against dimensionless gap, per exponent k"});
+        io::Table c;
+        c.title = std::string("Collapse of the ") + (fig == Figure::force ? "Fig. 3" : "Fig. 4") + " curves across radii";
+        c.columns = {"variant", "exponent", "max_relative_spread"};
+        for (const auto& x : files.collapse)
+            c.rows.push_back({std::string(bridge::to_string(x.variant)),
+                              fig == Figure::force ? io::Cell(std::string("-")) : io::Cell(x.exponent), x.max_relative_spread});
+        c.notes.push_back("(max - min)/max over radii at the same gap; 0 means the curves coincide");
+        curves.blocks.push_back(TableBlock{c});
+    }
+    return curves;
+}
+
+Section bridges_section(const ReportOptions& o, const slump::SlumpScene& scene, const fs::path& figures, std::vector<Caveat>& caveats) {
+    Section bridges{"Bridge model accuracy", {}};
+    const double vhat = slump::bridge_vhat(scene);
+    bridges.blocks.push_back(Paragraph{"The scene's liquid gives V^ = " + format_short(vhat) +
+                                       " for every S_f (Eq. 5 scales the bridge with the particle mass). The regressions against "
+                                       "the exact Young-Laplace bridge there, and over a grid of V^, theta and gap:"});
+    bridges.blocks.push_back(TableBlock{bridge_at_scene(vhat, scene.liquid.contact_angle)});
+    const auto grid = default_bridge_error_grid(o.quick);
+    const auto study = bridge_error_study(grid, o.bridge_table_path, o.quick ? 4 : 16, o.quick ? 5 : 21, o.quick ? 0.02 : 0.2);
+    write_bridge_error_files(study, figures, true);
+    bridges.blocks.push_back(TableBlock{study.summary});
+    bridges.blocks.push_back(FigureBlock{figures / "bridge_mikami_error.png",
+                                         "Relative error of Mikami (1998) against the exact bridge over V^ and gap, theta = 0"});
+    bridges.blocks.push_back(FigureBlock{figures / "bridge_speed_error.png", "Cost per force evaluation against error, per model"});
+    const auto printed = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::yun_park_2017});
+    const auto published = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::mikami1998});
+    const double bound = 2 * M_PI * scene.radius_m * scene.liquid.surface_tension_n_per_m * std::cos(scene.liquid.contact_angle.radians());
+    const double f_printed = bridge::bridge_force_newton(printed, bridge::mikami_fhat(printed, 0), scene.radius_m,
+                                                         scene.liquid.surface_tension_n_per_m);
+    const double f_published = bridge::bridge_force_newton(published, bridge::mikami_fhat(published, 0), scene.radius_m,
+                                                           scene.liquid.surface_tension_n_per_m);
+    bridges.blocks.push_back(Paragraph{
+        "Printed against published Mikami: at contact, R = " + format_short(scene.radius_m * 1e3) + " mm, the paper's printed form "
+        "(2 pi R gamma, C = 0.042) gives F = " + format_short(f_printed * 1e3) + " mN; Mikami's published form (pi R gamma) gives " +
+        format_short(f_published * 1e3) + " mN; no sphere-sphere bridge can exceed 2 pi R gamma cos(theta) = " +
+        format_short(bound * 1e3) + " mN. The printed form exceeds the bound by " + pct(f_printed / bound - 1) +
+        ", so demscale defaults to the published form" +
+        (scene.particle_curve == bridge::CurveSource::exact
+             ? ". This scene's DEM bridges follow neither: they take the exact Young-Laplace bridge (bridge_variant = table), "
+               "and the table and curves above show the fit it replaces."
+             : " (" + slump::bridge_variant_name(scene) + " in this scene).")});
+    // The fits' findings at the scene's V̂ and θ, and with wet walls the wall fit's excess over
+    // the exact sphere–plane bridge: what every command that runs the scene prints.
+    for (const auto& w : slump::bridge_warnings(scene)) caveats.push_back({"the scene's bridge", w});
+    return bridges;
+}
+
+// Caveats per ensemble, not per run: how many runs did not come to rest, which geometry limits apply.
+void study_caveats(const slump::Study& study, std::vector<Caveat>& caveats) {
+    auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {
+        std::size_t moving = 0, unusable = 0;
+        for (const auto* r : runs) moving += r->unusable.empty() && !r->result.came_to_rest, unusable += !r->unusable.empty();
+        if (moving > 0)
+            caveats.push_back({who, "slump: " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
+                                        " runs not at rest when the spread time limit ended"});
+        if (unusable > 0)
+            caveats.push_back({who, "slump: " + std::to_string(unusable) + " of " + std::to_string(runs.size()) +
+                                        " fills unusable (the cone could not hold the scene's mass): the ensemble is not judged"});
+        for (const auto& w : runs.front()->warnings) caveats.push_back({who, "slump geometry limits similarity: " + w});
+    };
+    std::vector<const slump::StudyRun*> fine = {&study.reference};
+    for (const auto& r : study.replicas) fine.push_back(&r);
+    ensemble_caveats("fine", fine);
+    for (std::size_t i = 0; i < study.runs.size(); ++i)
+        ensemble_caveats("S_f = " + format_short(study.runs[i].grain.sf) + ", k = " + format_short(study.runs[i].grain.exponent),
+                         study.coarse_runs(i));
+}
+
+// The slump study's section (piles, ensembles, figures, runs) and the verdict section it opens.
+void slump_sections(const slump::Study& study, const ReportOptions& o, int seeds, const fs::path& figures, Section& slump_section,
+                    Section& verdict_section) {
+    slump_section.blocks.push_back(Paragraph{
+        "Mini-cone slump test (fill, settle, lift the cone at constant speed, spread until at rest or a time limit). The fine "
+        "reference has " + std::to_string(study.reference.result.particles) + " particles; each coarse run fills the same cone "
+        "with particles of radius S_f R and surface tension gamma S_f^k, everything else held (time step from the Rayleigh time)."});
+    auto side = [&](const slump::StudyRun& r, const std::string& stem, const std::string& what) {
+        const auto title = what + ": " + std::to_string(r.result.particles) + " particles, slump " +
+                           format_short(r.result.slump() * 1e3, 3) + " mm, spread " + format_short(r.result.final.spread * 1e3, 3) + " mm";
+        slump::write_slump_files(r.result, title, figures, stem, true);
+        slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title, true});
+    };
+    side(study.reference, "slump_reference", "fine reference (S_f = 1), seed " + std::to_string(study.reference.scene.seed));
+    for (const auto& r : study.runs)
+        if (r.unusable.empty()) side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
+             "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent) + ", seed " + std::to_string(r.scene.seed));
+    const auto files = write_study_files(study, o.scene_label, figures, "study", true);
+    slump_section.blocks.push_back(TableBlock{ensemble_table(study, o.scene_label)});
+    if (!files.front_png.empty()) {  // none when no ensemble could be judged
+        slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
+        slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
+        slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
+    }
+    slump_section.blocks.push_back(TableBlock{best_exponent_table(study, study.judged_scale_factors())});
+    slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, study.judged_scale_factors())});
+    slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
+    verdict_section.blocks.push_back(Paragraph{
+        "Each coarse ensemble (S_f, k) is compared with the fine ensemble, " + std::to_string(seeds) +
+        " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies inside the tolerance, FAIL "
+        "where it lies wholly outside, INCONCLUSIVE otherwise (docs/verdicts.md). " +
+        (study.has_control() ? std::string("Each is judged twice: raw, and after removing the offset the same S_f shows in the dry "
+                                           "control (the same scene and seeds without liquid); the corrected comparison decides, "
+                                           "and the dry control's own difference is the row beside. ")
+                             : std::string()) +
+        verdicts_by_exponent(study)});
+    verdict_section.blocks.push_back(TableBlock{verdict_table(study, o.scene_label)});
+}
+
+std::string number_list(const std::vector<double>& xs) {
+    std::string s;
+    for (double x : xs) s += (s.empty() ? "" : ", ") + format_short(x);
+    return s;
+}
+
+Section inputs_section(const ReportOptions& o, const slump::SlumpScene& scene, const slump::StudyPlan& plan,
+                       const std::vector<std::pair<std::string, double>>& timings) {
+    Section inputs{"Inputs", {}};
+    std::time_t now = std::time(nullptr);
+    char date[64];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    inputs.blocks.push_back(BulletList{{"demscale " + std::string(version) + (o.git_revision.empty() ? "" : ", git " + o.git_revision),
+                                        "generated " + std::string(date) + (o.quick ? " (--quick: small scene, coarse grids)" : ""),
+                                        "scale factors S_f: " + number_list(o.scale_factors),
+                                        "candidate exponents k (gamma = gamma0 S_f^k): " + number_list(plan.exponents),
+                                        "seeds per ensemble: " + std::to_string(plan.seeds),
+                                        "tolerances: slump " + pct(plan.tolerances.slump) + " of the fill height, spread " + pct(plan.tolerances.spread) +
+                                            ", profile " + pct(plan.tolerances.profile)}});
+    inputs.blocks.push_back(TableBlock{scene_table(scene, o.scene_label)});
+    io::Table time_table;
+    time_table.title = "Wall time of each section";
+    time_table.columns = {"section", "wall_s"};
+    for (const auto& [name, s] : timings) time_table.rows.push_back({name, s});
+    inputs.blocks.push_back(TableBlock{time_table});
+    return inputs;
+}
+
 }  // namespace
 
 ReportOutcome write_similarity_report(const ReportOptions& o, const std::function<void(const std::string&)>& log) {
@@ -195,203 +394,29 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
     auto scene = slump::load_slump_scene(o.scene_path);
     if (o.seed_base > 0) scene.seed = o.seed_base;
-    slump::StudyPlan plan;
-    plan.fine = scene;
-    plan.exponents = ks;
-    plan.scale_factors = o.scale_factors;
-    plan.tolerances = scene.tolerances;
-    plan.jobs = o.jobs, plan.threads_per_job = o.threads_per_job;
-    plan.cache_dir = o.cache_dir;
-    plan.slurm = o.slurm;
-    plan.seeds = o.seeds;
-    plan.baseline = o.baseline;
-    plan.live = o.live;
-    slump::validate_plan(plan);  // a bad plan is refused before any file is written
-    std::optional<slump::ResponsePlan> response;  // the measured exponent's, checked with the rest
-    if (o.estimate) {
-        response = *o.estimate;
-        response->fine = scene;
-        response->batch.jobs = o.jobs, response->batch.threads_per_job = o.threads_per_job, response->batch.cache_dir = o.cache_dir;
-        response->batch.slurm = o.slurm;
-        response->batch.live = o.live;
-        slump::validate_response_plan(*response);
-    }
-
-    // On Slurm, every slump run of the report goes in one submission and comes back in one call,
-    // before anything is written; the sections below then read them all from the cache.
-    if (o.slurm) {
-        auto study_runs = slump::plan_study(plan);
-        auto all = study_runs.all_runs();
-        std::optional<slump::ResponseStudy> response_runs;
-        if (response) {
-            response_runs = slump::plan_response_runs(*response);
-            for (auto* r : response_runs->all_runs()) all.push_back(r);
-        }
-        slump::run_batch(all, {o.jobs, o.threads_per_job, o.cache_dir, plan.force_dt, scene.radius_m, o.live, o.slurm},
-                         [&](const std::string& s) { say("slump: " + s); });
-    }
+    const auto plan = study_plan(o, scene, ks);  // a bad plan is refused before any file is written
+    const auto response = response_plan(o, scene);
+    if (o.slurm) run_all_on_slurm(o, plan, response, say);
 
     Document doc;
     doc.title = "demscale similarity report: " + scene.name;
     std::vector<Caveat> caveats;
-
-    Section similarity{"Similarity table", {}};
-    timed("similarity table", [&] {
-        similarity.blocks.push_back(Paragraph{"Table 1 of Yun & Park (2017) recomputed from " + config.source +
-                                              ": every scaled radius, its mass, liquid volume (Eq. 5), Mikami coefficients "
-                                              "(Eqs. 6-8), contact force and the stress of Eq. 11 for each exponent k."});
-        similarity.blocks.push_back(TableBlock{similarity_table(config, ks)});
-        similarity.blocks.push_back(Paragraph{"Which similarity groups each candidate exponent keeps (exponent 0) or breaks, from the "
-                                              "dimensional algebra of Feng et al. (2009) with S_L = S_f and S_rho = 1:"});
-        similarity.blocks.push_back(TableBlock{similarity_groups_table(ks)});
-    });
-
-    Section curves{"Curves: Figs. 3 and 4", {}};
-    timed("curves", [&] {
-        for (auto fig : {Figure::force, Figure::stress}) {
-            const auto files = write_curve_files(config, fig, ks, figures, true);
-            curves.blocks.push_back(FigureBlock{files.png, fig == Figure::force
-                                                               ? "Fig. 3: dimensionless capillary force against dimensionless gap, every radius"
-                                                               : "Fig. 4: bridge stress of Eq. 11 against dimensionless gap, per exponent k"});
-            io::Table c;
-            c.title = std::string("Collapse of the ") + (fig == Figure::force ? "Fig. 3" : "Fig. 4") + " curves across radii";
-            c.columns = {"variant", "exponent", "max_relative_spread"};
-            for (const auto& x : files.collapse)
-                c.rows.push_back({std::string(bridge::to_string(x.variant)),
-                                  fig == Figure::force ? io::Cell(std::string("-")) : io::Cell(x.exponent), x.max_relative_spread});
-            c.notes.push_back("(max - min)/max over radii at the same gap; 0 means the curves coincide");
-            curves.blocks.push_back(TableBlock{c});
-        }
-    });
-
-    Section bridges{"Bridge model accuracy", {}};
-    timed("bridge models", [&] {
-        const double vhat = slump::bridge_vhat(scene);
-        bridges.blocks.push_back(Paragraph{"The scene's liquid gives V^ = " + format_short(vhat) +
-                                           " for every S_f (Eq. 5 scales the bridge with the particle mass). The regressions against "
-                                           "the exact Young-Laplace bridge there, and over a grid of V^, theta and gap:"});
-        bridges.blocks.push_back(TableBlock{bridge_at_scene(vhat, scene.liquid.contact_angle)});
-        const auto grid = default_bridge_error_grid(o.quick);
-        const auto study = bridge_error_study(grid, o.bridge_table_path, o.quick ? 4 : 16, o.quick ? 5 : 21, o.quick ? 0.02 : 0.2);
-        write_bridge_error_files(study, figures, true);
-        bridges.blocks.push_back(TableBlock{study.summary});
-        bridges.blocks.push_back(FigureBlock{figures / "bridge_mikami_error.png",
-                                             "Relative error of Mikami (1998) against the exact bridge over V^ and gap, theta = 0"});
-        bridges.blocks.push_back(FigureBlock{figures / "bridge_speed_error.png", "Cost per force evaluation against error, per model"});
-        const auto printed = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::yun_park_2017});
-        const auto published = bridge::mikami_coefficients(vhat, scene.liquid.contact_angle, {bridge::MikamiVariant::mikami1998});
-        const double bound = 2 * M_PI * scene.radius_m * scene.liquid.surface_tension_n_per_m * std::cos(scene.liquid.contact_angle.radians());
-        const double f_printed = bridge::bridge_force_newton(printed, bridge::mikami_fhat(printed, 0), scene.radius_m,
-                                                             scene.liquid.surface_tension_n_per_m);
-        const double f_published = bridge::bridge_force_newton(published, bridge::mikami_fhat(published, 0), scene.radius_m,
-                                                               scene.liquid.surface_tension_n_per_m);
-        bridges.blocks.push_back(Paragraph{
-            "Printed against published Mikami: at contact, R = " + format_short(scene.radius_m * 1e3) + " mm, the paper's printed form "
-            "(2 pi R gamma, C = 0.042) gives F = " + format_short(f_printed * 1e3) + " mN; Mikami's published form (pi R gamma) gives " +
-            format_short(f_published * 1e3) + " mN; no sphere-sphere bridge can exceed 2 pi R gamma cos(theta) = " +
-            format_short(bound * 1e3) + " mN. The printed form exceeds the bound by " + pct(f_printed / bound - 1) +
-            ", so demscale defaults to the published form" +
-            (scene.particle_curve == bridge::CurveSource::exact
-                 ? ". This scene's DEM bridges follow neither: they take the exact Young-Laplace bridge (bridge_variant = table), "
-                   "and the table and curves above show the fit it replaces."
-                 : " (" + slump::bridge_variant_name(scene) + " in this scene).")});
-        // The fits' findings at the scene's V̂ and θ, and with wet walls the wall fit's excess over
-        // the exact sphere–plane bridge: what every command that runs the scene prints.
-        for (const auto& w : slump::bridge_warnings(scene)) caveats.push_back({"the scene's bridge", w});
-    });
-
-    Section slump_section{"Slump test", {}};
-    Section verdict_section{"Verdict", {}};
+    Section similarity, curves, bridges, slump_section{"Slump test", {}}, verdict_section{"Verdict", {}}, estimate_section{"Measured exponent", {}};
+    timed("similarity table", [&] { similarity = similarity_section(config, ks); });
+    timed("curves", [&] { curves = curves_section(config, ks, figures); });
+    timed("bridge models", [&] { bridges = bridges_section(o, scene, figures, caveats); });
     timed("slump study", [&] {
         const auto study = slump::run_study(plan, [&](const std::string& s) { say("slump: " + s); });
-        slump_section.blocks.push_back(Paragraph{
-            "Mini-cone slump test (fill, settle, lift the cone at constant speed, spread until at rest or a time limit). The fine "
-            "reference has " + std::to_string(study.reference.result.particles) + " particles; each coarse run fills the same cone "
-            "with particles of radius S_f R and surface tension gamma S_f^k, everything else held (time step from the Rayleigh time)."});
-        auto side = [&](const slump::StudyRun& r, const std::string& stem, const std::string& what) {
-            const auto title = what + ": " + std::to_string(r.result.particles) + " particles, slump " +
-                               format_short(r.result.slump() * 1e3, 3) + " mm, spread " + format_short(r.result.final.spread * 1e3, 3) + " mm";
-            slump::write_slump_files(r.result, title, figures, stem, true);
-            slump_section.blocks.push_back(FigureBlock{figures / (stem + "_side.png"), "Side view of the final pile, " + title, true});
-        };
-        side(study.reference, "slump_reference", "fine reference (S_f = 1), seed " + std::to_string(study.reference.scene.seed));
-        for (const auto& r : study.runs)
-            if (r.unusable.empty()) side(r, "slump_sf" + format_short(r.grain.sf) + "_k" + format_short(r.grain.exponent),
-                 "S_f = " + format_short(r.grain.sf) + ", k = " + format_short(r.grain.exponent) + ", seed " + std::to_string(r.scene.seed));
-        const auto files = write_study_files(study, o.scene_label, figures, "study", true);
-        slump_section.blocks.push_back(TableBlock{ensemble_table(study, o.scene_label)});
-        if (!files.front_png.empty()) {  // none when no ensemble could be judged
-            slump_section.blocks.push_back(FigureBlock{files.profiles_png, "Final radial height profiles of the coarse runs over the fine ones"});
-            slump_section.blocks.push_back(FigureBlock{files.error_png, "Slump, spread and profile differences against the exponent k, per S_f, with 95 % intervals"});
-            slump_section.blocks.push_back(FigureBlock{files.front_png, "Speed against error: profile distance against the particle-step speed-up"});
-        }
-        slump_section.blocks.push_back(TableBlock{best_exponent_table(study, study.judged_scale_factors())});
-        slump_section.blocks.push_back(Paragraph{"Reading the verdict. " + verdict_text(study, study.judged_scale_factors())});
-        slump_section.blocks.push_back(TableBlock{study_table(study, o.scene_label)});
-        verdict_section.blocks.push_back(Paragraph{
-            "Each coarse ensemble (S_f, k) is compared with the fine ensemble, " + std::to_string(plan.seeds) +
-            " seeds each, by an equivalence test: PASS where the 95 % interval of the difference lies inside the tolerance, FAIL "
-            "where it lies wholly outside, INCONCLUSIVE otherwise (docs/verdicts.md). " +
-            (study.has_control() ? std::string("Each is judged twice: raw, and after removing the offset the same S_f shows in the dry "
-                                               "control (the same scene and seeds without liquid); the corrected comparison decides, "
-                                               "and the dry control's own difference is the row beside. ")
-                                 : std::string()) +
-            verdicts_by_exponent(study)});
-        verdict_section.blocks.push_back(TableBlock{verdict_table(study, o.scene_label)});
-        // Caveats per ensemble, not per run: how many runs did not come to rest, which geometry limits apply.
-        auto ensemble_caveats = [&](const std::string& who, const std::vector<const slump::StudyRun*>& runs) {
-            std::size_t moving = 0, unusable = 0;
-            for (const auto* r : runs) moving += r->unusable.empty() && !r->result.came_to_rest, unusable += !r->unusable.empty();
-            if (moving > 0)
-                caveats.push_back({who, "slump: " + std::to_string(moving) + " of " + std::to_string(runs.size()) +
-                                            " runs not at rest when the spread time limit ended"});
-            if (unusable > 0)
-                caveats.push_back({who, "slump: " + std::to_string(unusable) + " of " + std::to_string(runs.size()) +
-                                            " fills unusable (the cone could not hold the scene's mass): the ensemble is not judged"});
-            for (const auto& w : runs.front()->warnings) caveats.push_back({who, "slump geometry limits similarity: " + w});
-        };
-        std::vector<const slump::StudyRun*> fine = {&study.reference};
-        for (const auto& r : study.replicas) fine.push_back(&r);
-        ensemble_caveats("fine", fine);
-        for (std::size_t i = 0; i < study.runs.size(); ++i)
-            ensemble_caveats("S_f = " + format_short(study.runs[i].grain.sf) + ", k = " + format_short(study.runs[i].grain.exponent),
-                             study.coarse_runs(i));
+        slump_sections(study, o, plan.seeds, figures, slump_section, verdict_section);
+        study_caveats(study, caveats);
     });
-
-    Section estimate_section{"Measured exponent", {}};
     if (response) timed("measured exponent", [&] {
-        const slump::ResponsePlan& rp = *response;
         const auto t0 = Clock::now();
-        const auto est = slump::run_response_study(rp, [&](const std::string& s) { say("estimate: " + s); });
+        const auto est = slump::run_response_study(*response, [&](const std::string& s) { say("estimate: " + s); });
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-        add_estimate_section(est, rp, wall, o.scene_label, figures, estimate_section, verdict_section, caveats);
+        add_estimate_section(est, *response, wall, o.scene_label, figures, estimate_section, verdict_section, caveats);
     });
-
-    Section inputs{"Inputs", {}};
-    std::time_t now = std::time(nullptr);
-    char date[64];
-    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    inputs.blocks.push_back(BulletList{{"demscale " + std::string(version) + (o.git_revision.empty() ? "" : ", git " + o.git_revision),
-                                        "generated " + std::string(date) + (o.quick ? " (--quick: small scene, coarse grids)" : ""),
-                                        "scale factors S_f: " + [&] {
-                                            std::string s;
-                                            for (double x : o.scale_factors) s += (s.empty() ? "" : ", ") + format_short(x);
-                                            return s;
-                                        }(),
-                                        "candidate exponents k (gamma = gamma0 S_f^k): " + [&] {
-                                            std::string s;
-                                            for (double x : ks) s += (s.empty() ? "" : ", ") + format_short(x);
-                                            return s;
-                                        }(),
-                                        "seeds per ensemble: " + std::to_string(plan.seeds),
-                                        "tolerances: slump " + pct(plan.tolerances.slump) + " of the fill height, spread " + pct(plan.tolerances.spread) +
-                                            ", profile " + pct(plan.tolerances.profile)}});
-    inputs.blocks.push_back(TableBlock{scene_table(scene, o.scene_label)});
-    io::Table time_table;
-    time_table.title = "Wall time of each section";
-    time_table.columns = {"section", "wall_s"};
-    for (const auto& [name, s] : timings) time_table.rows.push_back({name, s});
-    inputs.blocks.push_back(TableBlock{time_table});
+    const Section inputs = inputs_section(o, scene, plan, timings);
 
     Section caveat_section{"Caveats", {}};
     const auto caveat_lines = grouped_caveats(caveats);
