@@ -53,11 +53,12 @@ double cone_volume_below(const SlumpScene& s, double z) {  // frustum: Ï€ z (râ‚
 
 double fill_mass(const SlumpScene& s) { return s.material.density * s.fill_solid_fraction * cone_volume_below(s, s.fill_height_m); }
 
-SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPart> parts) {
-    const io::TomlReader r(path, scene_schema(parts));
-    SlumpScene s;
-    s.source = path;
-    constexpr double mm = 1e-3;
+namespace {
+
+constexpr double mm = 1e-3;
+
+// [scene], [cone], [particles], [floor].
+void read_geometry_and_fill(const io::TomlReader& r, SlumpScene& s) {
     if (auto n = r.text("scene.name")) s.name = *n;
     s.bottom_diameter_m = r.checked("cone.bottom_diameter_mm", 38, positive) * mm;
     s.top_diameter_m = r.checked("cone.top_diameter_mm", 19, positive) * mm;
@@ -83,8 +84,10 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
 
     s.rough_floor = r.boolean("floor.rough").value_or(false);
     s.rough_floor_diameter_m = r.checked("floor.rough_diameter_mm", 150, positive) * mm;
+}
 
-    // The law selection, then every registered part's parameters from its table.
+// Which laws the scene chooses: the rolling model, wet or dry, the bridge curves, lubrication, rupture.
+void read_law_choices(const io::TomlReader& r, SlumpScene& s) {
     s.rolling_resistance = r.boolean("contact.rolling_resistance").value_or(true);
     if (auto m = r.text("contact.rolling_model")) {
         if (*m == "epsd") s.rolling_model = RollingModel::epsd;
@@ -112,6 +115,10 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     }
     if (auto v = r.text("liquid.rupture"))
         r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });
+}
+
+// Every registered part's parameters from its table, then what this scene's choices rule out.
+void read_law_parameters(const io::TomlReader& r, SlumpScene& s, std::span<const dem::LawPart> parts) {
     for (const auto& part : parts)
         for (const auto& p : part.parameters) {
             const std::string key(p.key);
@@ -138,7 +145,10 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
                              format_number(s.material.rolling_damping), "0 unless rolling_model = \"epsd\" (only Ai's model C has the dashpot)");
         s.material.rolling_damping = 0;
     }
+}
 
+// [run], [check], [similarity].
+void read_run_and_check(const io::TomlReader& r, SlumpScene& s) {
     s.dt_s = r.checked("run.dt_s", 1e-5, positive);
     s.dt_field = r.where("run.dt_s", "run.dt_s");
     s.gravity = r.checked("run.gravity_m_per_s2", 9.81, positive);
@@ -169,8 +179,10 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     };
     number_list("similarity.scale_factors", s.table_scale_factors, 0, 100);
     number_list("similarity.exponents", s.exponents, -20, 20);
+}
 
-    // Consistency: the particles must fit the cone; the fill must fit under its top.
+// Consistency: the particles must fit the cone; the fill must fit under its top.
+void check_consistency(const io::TomlReader& r, const SlumpScene& s) {
     if (!(s.top_diameter_m < s.bottom_diameter_m))
         throw InputError(r.where("cone.top_diameter_mm", "cone.top_diameter_mm"), format_number(s.top_diameter_m / mm),
                          "< cone.bottom_diameter_mm (a cone narrowing upwards)");
@@ -193,6 +205,19 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     if (!(s.fill_height_m <= s.height_m))
         throw InputError(r.where("particles.fill_height_mm", "particles.fill_height_mm"), format_number(s.fill_height_m / mm),
                          "<= cone.height_mm = " + format_number(s.height_m / mm));
+}
+
+}  // namespace
+
+SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPart> parts) {
+    const io::TomlReader r(path, scene_schema(parts));
+    SlumpScene s;
+    s.source = path;
+    read_geometry_and_fill(r, s);
+    read_law_choices(r, s);  // before the parameters: which parts a scene may use depends on them
+    read_law_parameters(r, s, parts);
+    read_run_and_check(r, s);
+    check_consistency(r, s);
     return s;
 }
 
