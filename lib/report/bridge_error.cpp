@@ -53,13 +53,22 @@ BridgeErrorGrid default_bridge_error_grid(bool quick) {
             log_space(1e-5, 0.1, 9), {0, 10, 20, 30, 40}};
 }
 
-BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::string& table_path, int map_vhat_points,
-                                    int map_gap_points, double cost_seconds_per_run, const std::function<void(int, int)>& progress) {
-    const auto table = io::read_bridge_table(table_path);
-    std::map<std::string, std::unique_ptr<bridge::BridgeModel>> models;
-    for (const auto& name : compared) models[name] = bridge::make_bridge_model(name, &table);
+namespace {
 
-    BridgeErrorStudy study;
+using Models = std::map<std::string, std::unique_ptr<bridge::BridgeModel>>;
+using Errors = std::map<std::string, std::vector<double>>;  // per model, relative errors
+
+const std::vector<double>& of(const Errors& e, const std::string& model) {
+    static const std::vector<double> none;
+    const auto it = e.find(model);
+    return it == e.end() ? none : it->second;
+}
+
+// Every model against the exact sphere-sphere bridge on the grid: study.points and outside_scope;
+// the force and rupture-distance errors per model.
+void compare_sphere_sphere(const BridgeErrorGrid& grid, const std::string& table_path, const bridge::BridgeTable& table,
+                           Models& models, BridgeErrorStudy& study, Errors& errors, Errors& rupture_errors,
+                           const std::function<void(int, int)>& progress) {
     auto& pts = study.points;
     pts.title = "Bridge models against the exact Young-Laplace solution (equal spheres)";
     pts.metadata = {{"demscale", version},
@@ -68,7 +77,6 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
     pts.columns = {"vhat", "theta_deg", "x", "hhat", "fhat_exact"};
     for (const auto& m : compared) pts.columns.push_back(column_of(m));
 
-    std::map<std::string, std::vector<double>> errors, rupture_errors;
     const int total = static_cast<int>(grid.vhat.size() * grid.theta_deg.size());
     int done = 0;
     for (double vhat : grid.vhat) {
@@ -107,6 +115,11 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
         }
     }
 
+}
+
+// The summary's rows of the compared models: error statistics and the cost of one evaluation.
+void summarize_models(const BridgeErrorGrid& grid, Models& models, const Errors& errors, const Errors& rupture_errors,
+                      double cost_seconds_per_run, BridgeErrorStudy& study) {
     auto& sum = study.summary;
     sum.title = "Bridge model accuracy and cost (errors relative to the exact solution)";
     sum.metadata = {{"grid", std::to_string(grid.vhat.size()) + " V^ x " + std::to_string(grid.theta_deg.size()) +
@@ -121,9 +134,9 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
     const ContactAngle zero{Degrees{0}};
     for (const auto& m : compared) {
         std::vector<double> a;
-        for (double e : errors[m]) a.push_back(std::abs(e));
+        for (double e : of(errors, m)) a.push_back(std::abs(e));
         std::vector<double> ra;
-        for (double e : rupture_errors[m]) ra.push_back(std::abs(e));
+        for (double e : of(rupture_errors, m)) ra.push_back(std::abs(e));
         const double n = std::max<double>(static_cast<double>(a.size()), 1.0);
         const auto over = [&](double t) { return static_cast<double>(std::count_if(a.begin(), a.end(), [t](double x) { return x > t; })) / n; };
         const auto cost = bridge::measure_evaluation_cost(*models[m], 0.05544, zero, cost_seconds_per_run);
@@ -131,8 +144,12 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
                             median(a), over(0.05), over(0.20), ra.empty() ? 0.0 : *std::max_element(ra.begin(), ra.end()),
                             cost.ns_per_evaluation});
     }
-    // Mikami's sphere–wall fit, the law of the scenes' wet walls, against the exact sphere–plane
-    // bridge with both surfaces at θ (docs/bridge-models.md).
+}
+
+// Mikami's sphere–wall fit, the law of the scenes' wet walls, against the exact sphere–plane
+// bridge with both surfaces at θ (docs/bridge-models.md): study.wall and its summary row.
+void compare_sphere_wall(const BridgeErrorGrid& grid, BridgeErrorStudy& study) {
+    auto& sum = study.summary;
     auto& wall = study.wall;
     wall.title = "Mikami's sphere-wall fit against the exact sphere-plane bridge (sphere and wall at theta)";
     wall.metadata = {{"fhat", "F/(2 pi R gamma); hhat = gap to the wall / R; x = hhat / hhat_rupture of the exact solution"}};
@@ -175,13 +192,12 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
                             wall_errors.empty() ? 0.0 : *std::max_element(wall_errors.begin(), wall_errors.end()), median(wall_errors),
                             over(0.05), over(0.20), rupture, io::not_available});
     }
-    {
-        const auto exact_model = bridge::make_bridge_model("exact");
-        const auto cost = bridge::measure_evaluation_cost(*exact_model, 0.05544, zero, cost_seconds_per_run, 3);
-        sum.rows.push_back({std::string("exact"), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, cost.ns_per_evaluation});
-    }
+}
 
-    auto& map = study.mikami_map;
+// Mikami's relative error over V^ and the gap at θ = 0, for the error map figure.
+io::Table mikami_error_map(int map_vhat_points, int map_gap_points) {
+    const ContactAngle zero{Degrees{0}};
+    io::Table map;
     map.title = "Relative error of mikami1998 against the exact bridge, theta = 0";
     map.columns = {"vhat", "x", "rel_error"};
     const auto mikami = bridge::make_bridge_model("mikami1998");
@@ -196,6 +212,28 @@ BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::stri
             map.rows.push_back({vhat, x, r ? *r : 0.0});
         }
     }
+    return map;
+}
+
+}  // namespace
+
+BridgeErrorStudy bridge_error_study(const BridgeErrorGrid& grid, const std::string& table_path, int map_vhat_points,
+                                    int map_gap_points, double cost_seconds_per_run, const std::function<void(int, int)>& progress) {
+    const auto table = io::read_bridge_table(table_path);
+    Models models;
+    for (const auto& name : compared) models[name] = bridge::make_bridge_model(name, &table);
+    BridgeErrorStudy study;
+    Errors errors, rupture_errors;
+    compare_sphere_sphere(grid, table_path, table, models, study, errors, rupture_errors, progress);
+    summarize_models(grid, models, errors, rupture_errors, cost_seconds_per_run, study);
+    compare_sphere_wall(grid, study);
+    {
+        const ContactAngle zero{Degrees{0}};
+        const auto exact_model = bridge::make_bridge_model("exact");
+        const auto cost = bridge::measure_evaluation_cost(*exact_model, 0.05544, zero, cost_seconds_per_run, 3);
+        study.summary.rows.push_back({std::string("exact"), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, cost.ns_per_evaluation});
+    }
+    study.mikami_map = mikami_error_map(map_vhat_points, map_gap_points);
     return study;
 }
 
