@@ -387,15 +387,18 @@ TransitionFit fit_set(const std::vector<const ResponseCurve*>& curves, double sf
     for (double v : m.values) f.profile_deviance.push_back(std::max(0.0, 2 * (ll_hat - v)));
     const std::size_t wet_params = static_cast<std::size_t>(d.degree + 2) + (d.controls ? curves.size() - 1 : 0);
     f.cutoff = deviance_cutoff(d.on_branch, wet_params);
-    // The interval: from k̂ outward to the first grid point beyond the cutoff, then bisection (the
-    // part of {k : deviance ≤ cutoff} that holds k̂).
+    // The interval: from k̂ itself (deviance 0) outward to the first grid point beyond the cutoff,
+    // then bisection (the part of {k : deviance ≤ cutoff} that holds k̂). Not from the grid point
+    // nearest k̂: with many runs the profile is narrower than the grid step, and that point can lie
+    // outside the set already.
     const int n = static_cast<int>(m.grid.size()) - 1;
     auto crossing = [&](int dir) -> double {
+        double inside = k_hat;
         int i = static_cast<int>(m.best);
-        while (i + dir >= 0 && i + dir <= n && f.profile_deviance[static_cast<std::size_t>(i + dir)] <= f.cutoff) i += dir;
-        if (i + dir < 0 || i + dir > n) return dir < 0 ? s.k_min : s.k_max;
-        double inside = m.grid[static_cast<std::size_t>(i)];
-        double outside = m.grid[static_cast<std::size_t>(i + dir)];
+        while (i >= 0 && i <= n && (dir > 0 ? m.grid[static_cast<std::size_t>(i)] <= k_hat : m.grid[static_cast<std::size_t>(i)] >= k_hat)) i += dir;
+        for (; i >= 0 && i <= n && f.profile_deviance[static_cast<std::size_t>(i)] <= f.cutoff; i += dir) inside = m.grid[static_cast<std::size_t>(i)];
+        if (i < 0 || i > n) return dir < 0 ? s.k_min : s.k_max;
+        double outside = m.grid[static_cast<std::size_t>(i)];
         for (int it = 0; it < 30; ++it) {
             const double mid = 0.5 * (inside + outside);
             (2 * (ll_hat - m.at(d, s, mid)) <= f.cutoff ? inside : outside) = mid;

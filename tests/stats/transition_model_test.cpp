@@ -36,6 +36,31 @@ TEST_CASE("Transition model: many runs give back the threshold, its width, the b
     CHECK(mean_response(fit[0], std::log(0.01)) == Approx(slumped_branch(fit[0], std::log(0.01))).margin(1e-6));  // nothing stands there
 }
 
+TEST_CASE("Transition model: a profile narrower than the search grid gives the same interval wherever the grid falls",
+          "[stats][exponent]") {
+    // 40 seeds a level: the 95 % profile interval is about 0.05 wide, half the grid step of 0.1. Its
+    // ends are where the deviance crosses the cutoff, which does not depend on the grid; the grid
+    // point nearest k̂ can lie outside the interval already, and an interval grown from it ended at
+    // that grid point. Moving the grid by half a step (k_min -2 against -2.05) must not move it.
+    std::mt19937_64 rng(23);
+    test::ReferenceLikeDesign d;
+    d.seeds = 40, d.shape = test::model_form(), d.control = false;
+    const ResponseCurve fine = test::reference_like_curve(1, 0, d, rng);
+    const ResponseCurve coarse = test::reference_like_curve(1.96, 0.97, d, rng);
+    int narrower_than_grid = 0;
+    for (double k_min : {-2.03, -2.05, -2.07}) {  // the grid moved by 0.03, 0.05 and 0.07
+        TransitionSettings s;
+        s.k_min = k_min;
+        const auto a = fit_transition(fine, {coarse}).at(0), b = fit_transition(fine, {coarse}, s).at(0);
+        REQUIRE(a.profile_ci.contains(a.k));
+        CHECK(b.k == Approx(a.k).margin(1e-6));
+        CHECK(b.profile_ci.low == Approx(a.profile_ci.low).margin(1e-6));
+        CHECK(b.profile_ci.high == Approx(a.profile_ci.high).margin(1e-6));
+        narrower_than_grid += a.profile_ci.high - a.profile_ci.low < 0.1;
+    }
+    CHECK(narrower_than_grid == 3);  // the case the test is for
+}
+
 TEST_CASE("Transition model: without standing runs it is the shift of the slumped branch, by hand", "[stats][exponent]") {
     // A straight branch y = 0.5 − 0.2 (u − ln 0.1) and no noise: the coarse levels at γ̄ = 0.2 and
     // 0.4 N/m with S_f = 2, k = 1 lie where the fine one has 0.1 and 0.2: y = 0.5 and 0.5 − 0.2 ln 2.
