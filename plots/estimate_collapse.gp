@@ -6,11 +6,11 @@ set datafile separator comma
 set datafile columnheaders
 set grid lc rgb '#dddddd'
 set key top right box opaque
-theta = -2.148993303178505; width = 0.1; centre = -2.8606558126602835
+theta = -2.1474915995240584; width = 0.10009176168225674; centre = -2.8606558126602835
 p_stand(g) = 0.5*erfc(-(log(g)-theta)/width/sqrt(2))
-branch(g) = (0.6022109675320029)*(log(g)-centre)**0 + (-0.2351140567690656)*(log(g)-centre)**1 + (-0.20554921623190348)*(log(g)-centre)**2
-mean_response(g) = (1-p_stand(g))*branch(g) + p_stand(g)*0.26165771868766824
-set multiplot layout 3,3 title "Slump response to surface tension, data/scenes/kantro\\_wet.toml\n{/*0.85 points: ensembles (bars: 95 % over seeds); collapsed: coarse γ̄ divided by S_f^k; lines: the transition model at k̂ = 0.976}" font ',13'
+branch(g) = (0.6033833865832187)*(log(g)-centre)**0 + (-0.23651810686996683)*(log(g)-centre)**1 + (-0.2005943675178857)*(log(g)-centre)**2
+mean_response(g) = (1-p_stand(g))*branch(g) + p_stand(g)*0.2593948049334959
+set multiplot layout 3,3 title "Slump response to surface tension, data/scenes/kantro\\_wet.toml\n{/*0.85 points: ensembles (bars: 95 % over seeds); collapsed: coarse γ̄ divided by S_f^k; lines: the transition model at k̂ = 0.953}" font ',13'
 set logscale x
 set ylabel 'slump / fill height'
 set yrange [0:*]
@@ -20,12 +20,12 @@ plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 1 pt 5 title 'fine', \
   'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 2 pt 6 title 'S_f = 1.4', \
   'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 3 pt 7 title 'S_f = 1.96'
-set title 'collapsed at k̂ = 0.976 (transition model)'
+set title 'collapsed at k̂ = 0.953 (transition model)'
 set xlabel 'γ̄ / S_f^k (N/m)'
 plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 1 pt 5 title 'fine', \
-  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9759819856702922) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 2 pt 6 title 'S_f = 1.4', \
-  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9759819856702922) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 3 pt 7 title 'S_f = 1.96', \
+  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9528031359714251) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 2 pt 6 title 'S_f = 1.4', \
+  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9528031359714251) : NaN):"slump_over_height":"slump_low":"slump_high" with yerrorbars lw 2 lc 3 pt 7 title 'S_f = 1.96', \
   mean_response(x) with lines lw 2 lc rgb 'black' title 'model: mean response'
 set title 'quantal part: columns that stood (slump < 0.3 H_0)'
 set xlabel 'γ̄ / S_f^{k̂} (N/m)'
@@ -33,16 +33,16 @@ set ylabel 'share standing'
 set yrange [-0.05:1.05]
 plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):(column("standing")/column("seeds")) with points pt 5 ps 1.5 lc 1 title 'fine', \
-  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9759819856702922) : NaN):(column("standing")/column("seeds")) with points pt 6 ps 1.5 lc 2 title 'S_f = 1.4', \
-  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9759819856702922) : NaN):(column("standing")/column("seeds")) with points pt 7 ps 1.5 lc 3 title 'S_f = 1.96', \
+  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9528031359714251) : NaN):(column("standing")/column("seeds")) with points pt 6 ps 1.5 lc 2 title 'S_f = 1.4', \
+  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9528031359714251) : NaN):(column("standing")/column("seeds")) with points pt 7 ps 1.5 lc 3 title 'S_f = 1.96', \
   p_stand(x) with lines lw 2 lc rgb 'black' title 'probit'
 set title 'continuous part: the runs that slumped (dry offset removed)'
 set ylabel 'slump / fill height'
 set yrange [*:*]
 plot \
   'estimate_response.csv' using (abs(column("sf") - 1) < 1e-9 ? column("gamma_n_per_m") : NaN):(column("slumped_mean") - 0) with points pt 5 ps 1.5 lc 1 title 'fine', \
-  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9759819856702922) : NaN):(column("slumped_mean") - 0.0073031750844541055) with points pt 6 ps 1.5 lc 2 title 'S_f = 1.4', \
-  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9759819856702922) : NaN):(column("slumped_mean") - 0.015157734159683134) with points pt 7 ps 1.5 lc 3 title 'S_f = 1.96', \
+  'estimate_response.csv' using (abs(column("sf") - 1.4) < 1e-9 ? column("gamma_n_per_m")/1.4**(0.9528031359714251) : NaN):(column("slumped_mean") - 0.0052127092047906665) with points pt 6 ps 1.5 lc 2 title 'S_f = 1.4', \
+  'estimate_response.csv' using (abs(column("sf") - 1.96) < 1e-9 ? column("gamma_n_per_m")/1.96**(0.9528031359714251) : NaN):(column("slumped_mean") - 0.014516229965479854) with points pt 7 ps 1.5 lc 3 title 'S_f = 1.96', \
   branch(x) with lines lw 2 lc rgb 'black' title 'slumped branch'
 set yrange [0:*]
 set title 'collapsed at k = 1 (stress, Eq. 11)'
@@ -71,13 +71,14 @@ plot \
   'estimate_residual.csv' using "k":"rms_sf1.4" with lines lw 2 lc 2 title 'S_f = 1.4', \
   'estimate_residual.csv' using "k":"rms_sf1.96" with lines lw 2 lc 3 title 'S_f = 1.96', \
   'estimate_residual.csv' using "k":"rms_all" with lines lw 3 lc rgb 'black' title 'all'
-set title 'transition model: profile deviance against k'
+set title 'profile deviance (grid 0.1); bar: joint 95 % interval'
 set ylabel '2 (ℓ(k̂) − ℓ(k))'
 set yrange [0:20]
-set xrange [-0.5:2]
+set xrange [0.4:1.5]
+set arrow 1 from 0.8946561167698082,1 to 1.010950155173042,1 heads size 0.03,90 lw 3 lc rgb 'black' front
 plot \
-  'estimate_residual.csv' using "k":"deviance_sf1.4" with lines lw 2 lc 2 title 'S_f = 1.4', \
-  'estimate_residual.csv' using "k":"deviance_sf1.96" with lines lw 2 lc 3 title 'S_f = 1.96', \
-  'estimate_residual.csv' using "k":"deviance_all" with lines lw 3 lc rgb 'black' title 'all', \
-  4.0403457177788225 with lines dt 2 lc rgb 'gray40' title '95 % cutoff'
+  'estimate_residual.csv' using "k":"deviance_sf1.4" with linespoints pt 7 ps 0.5 lw 2 lc 2 title 'S_f = 1.4', \
+  'estimate_residual.csv' using "k":"deviance_sf1.96" with linespoints pt 7 ps 0.5 lw 2 lc 3 title 'S_f = 1.96', \
+  'estimate_residual.csv' using "k":"deviance_all" with linespoints pt 7 ps 0.6 lw 3 lc rgb 'black' title 'all', \
+  3.9887318259135554 with lines dt 2 lc rgb 'gray40' title '95 % cutoff'
 unset multiplot

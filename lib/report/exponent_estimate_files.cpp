@@ -297,12 +297,17 @@ std::string figure_script(const slump::ResponseStudy& study, const std::string& 
         s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"rms_sf" << format_short(sfs[i], 3)
           << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
     if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"rms_all\" with lines lw 3 lc rgb 'black' title 'all'";
-    s << "\nset title 'transition model: profile deviance against k'\nset ylabel '2 (ℓ(k̂) − ℓ(k))'\nset yrange [0:20]\n"
-      << "set xrange [" << format_number(std::floor(2 * (k_hat - 1)) / 2) << ":" << format_number(std::ceil(2 * (k_hat + 1)) / 2) << "]\nplot \\\n";
+    // The deviance is known on the search grid only (steps of 0.1): points joined by lines, and the
+    // printed interval (profile, widened by the jackknife) as a bar, so the V is not read as the interval.
+    s << "\nset title 'profile deviance (grid 0.1); bar: joint 95 % interval'\n"
+         "set ylabel '2 (ℓ(k̂) − ℓ(k))'\nset yrange [0:20]\n"
+      << "set xrange [" << format_number(std::floor(10 * (k_hat - 0.5)) / 10) << ":" << format_number(std::ceil(10 * (k_hat + 0.5)) / 10) << "]\n"
+      << "set arrow 1 from " << format_number(fit.ci.low) << ",1 to " << format_number(fit.ci.high)
+      << ",1 heads size 0.03,90 lw 3 lc rgb 'black' front\nplot \\\n";
     for (std::size_t i = 1; i < sfs.size(); ++i)
         s << (i > 1 ? ", \\\n" : "") << "  'estimate_residual.csv' using \"k\":\"deviance_sf" << format_short(sfs[i], 3)
-          << "\" with lines lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
-    if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"deviance_all\" with lines lw 3 lc rgb 'black' title 'all'";
+          << "\" with linespoints pt 7 ps 0.5 lw 2 lc " << i + 1 << " title 'S_f = " << format_short(sfs[i], 3) << "'";
+    if (sfs.size() > 2) s << ", \\\n  'estimate_residual.csv' using \"k\":\"deviance_all\" with linespoints pt 7 ps 0.6 lw 3 lc rgb 'black' title 'all'";
     s << ", \\\n  " << format_number(fit.cutoff) << " with lines dt 2 lc rgb 'gray40' title '95 % cutoff'\nunset multiplot\n";
     return s.str();
 }
