@@ -247,7 +247,8 @@ io::Table study_table(const slump::Study& study, const std::string& scene_label)
 io::Table best_exponent_table(const slump::Study& study, const std::vector<double>& scale_factors) {
     io::Table t;
     t.title = "Exponent whose ensemble has the smallest profile distance, per scale factor";
-    t.columns = {"sf", "best_exponent", "profile_distance_pct", "slump_diff_pct_of_height", "spread_diff_pct", "verdict"};
+    t.columns = {"sf", "best_exponent", "profile_distance_pct", "profile_low_pct", "profile_high_pct", "not_told_apart",
+                 "slump_diff_pct_of_height", "spread_diff_pct", "verdict"};
     const auto& n = study.noise;
     t.metadata = {{"noise floor (fine ensemble, sd over seeds)",
                    "slump " + format_short(100 * n.slump_over_height.sd, 3) + " % of the height, spread " +
@@ -256,9 +257,15 @@ io::Table best_exponent_table(const slump::Study& study, const std::vector<doubl
     if (study.has_control()) t.metadata.push_back({"judged", "baseline-corrected (dry control removed)"});
     for (double sf : scale_factors) {
         const auto& b = study.best_at(sf);
-        t.rows.push_back({sf, b.exponent, 100 * b.criteria[2].estimate, 100 * b.criteria[0].estimate, 100 * b.criteria[1].estimate,
+        std::string others;
+        for (double k : study.not_told_apart_from_best(sf)) others += (others.empty() ? "k = " : ", ") + format_short(k);
+        t.rows.push_back({sf, b.exponent, 100 * b.criteria[2].estimate, 100 * b.criteria[2].interval.low, 100 * b.criteria[2].interval.high,
+                          others.empty() ? "none" : others, 100 * b.criteria[0].estimate, 100 * b.criteria[1].estimate,
                           stats::verdict_name(b.overall)});
     }
+    t.notes.push_back("not_told_apart: the other exponents whose profile interval reaches below the top of the best's (95 % "
+                      "intervals overlapping), which these seeds cannot tell from the best; the best is only as sure as that. "
+                      "For k as a continuous interval, --k-range (the transition model on the response curves)");
     return t;
 }
 

@@ -79,6 +79,15 @@ const EnsembleVerdict& Study::best_at(double sf) const {
     return *best;
 }
 
+std::vector<double> Study::not_told_apart_from_best(double sf) const {
+    const auto& best = best_at(sf);
+    std::vector<double> ks;
+    for (const auto& v : deciding())
+        if (&v != &best && v.sf == sf && v.unusable.empty() && v.criteria.at(2).interval.low <= best.criteria.at(2).interval.high)
+            ks.push_back(v.exponent);
+    return ks;
+}
+
 void validate_plan(const StudyPlan& plan) {
     if (plan.jobs < 1) throw InputError("--jobs", std::to_string(plan.jobs), ">= 1");
     if (plan.threads_per_job < 1) throw InputError("--threads", std::to_string(plan.threads_per_job), ">= 1");

@@ -81,6 +81,10 @@ struct Study {
     std::vector<const StudyRun*> all_runs() const;
     // The deciding verdict with the smallest profile distance at this S_f, over the exponents.
     const EnsembleVerdict& best_at(double sf) const;
+    // The best's uncertainty: the other exponents at this S_f whose profile interval reaches below the
+    // top of the best's, so that the seeds cannot tell them from it (overlapping 95 % intervals: a
+    // conservative test, docs/verdicts.md).
+    std::vector<double> not_told_apart_from_best(double sf) const;
 };
 
 // Throws InputError for a bad plan: jobs, threads, replicas, exponents, any coarse scene.

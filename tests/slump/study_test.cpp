@@ -555,3 +555,30 @@ TEST_CASE("Verdicts on a runs file: Welch t by hand, the dry twins removed, miss
     rows.pop_back();  // seed 2's dry coarse run
     CHECK_THROWS_WITH(slump::judge_runs(rows, "runs.csv", gamma, 1, {}, tol, slump::Baseline::dry), Catch::Contains("for seed 2"));
 }
+
+TEST_CASE("Sweep's best k carries the exponents the seeds cannot tell from it", "[slump][study]") {
+    // Profile distances at S_f 1.4 (estimate [interval]): k 1: 6 [4, 9], k 1.5: 8 [5, 11], k 2: 12 [9.5, 15],
+    // k 3: 30 [25, 35]. The best is k 1; k 1.5's interval reaches 5 < 9 (overlap), k 2's starts at 9.5 > 9.
+    slump::Study study;
+    auto verdict = [](double sf, double k, double d, double lo, double hi) {
+        slump::EnsembleVerdict v;
+        v.sf = sf, v.exponent = k;
+        auto criterion = [](const char* measure, double estimate, stats::Interval ci, double tolerance) {
+            slump::Criterion c;
+            c.measure = measure, c.estimate = estimate, c.interval = ci, c.tolerance = tolerance;
+            return c;
+        };
+        v.criteria = {criterion("slump", 0, {-0.01, 0.01}, 0.05), criterion("spread", 0, {-0.01, 0.01}, 0.1),
+                      criterion("profile", d, {lo, hi}, 0.15)};
+        return v;
+    };
+    study.verdicts = {verdict(1.4, 1, 0.06, 0.04, 0.09), verdict(1.4, 1.5, 0.08, 0.05, 0.11), verdict(1.4, 2, 0.12, 0.095, 0.15),
+                      verdict(1.4, 3, 0.30, 0.25, 0.35), verdict(1.96, 1, 0.2, 0.1, 0.3), verdict(1.96, 2, 0.1, 0.08, 0.12)};
+    CHECK(study.best_at(1.4).exponent == 1);
+    CHECK(study.not_told_apart_from_best(1.4) == std::vector<double>{1.5});
+    CHECK(study.best_at(1.96).exponent == 2);
+    CHECK(study.not_told_apart_from_best(1.96) == std::vector<double>{1});  // 0.1 <= 0.12
+    const auto t = report::best_exponent_table(study, {1.4, 1.96});
+    REQUIRE(t.rows.size() == 2);
+    CHECK(std::get<std::string>(t.rows[0][5]) == "k = 1.5");
+}
