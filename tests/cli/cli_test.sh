@@ -388,6 +388,7 @@ case $case_name in
     "$demscale" sweep --exponents 1,3 --sf 1.4 --seeds 3 --scene "$src/data/scenes/small_wet.toml" --cache "$work/cache" \
       --out "$work/s" --no-png --format markdown >"$work/sweep.md" 2>"$work/sweep.err" || fail "sweep failed"
     grep -q '0 to run' "$work/sweep.err" || fail "sweep did not reuse the report's runs"
+    grep -q 'not_told_apart' "$work/sweep.md" || fail "sweep's best k carries no uncertainty"
     # The verdict rows (estimates with their intervals, up to the verdict; the report may set the
     # columns after it in a second table), spacing aside, are sweep's.
     grep -E '^\| +1\.4 \|.*baseline-corrected.*\] (FAIL|PASS|INCONCLUSIVE) \|' "$work/sweep.md" | tr -s ' ' | sed -E 's/^(([^|]*\|){8}).*/\1/' >"$work/rows"
