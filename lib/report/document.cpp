@@ -86,7 +86,7 @@ void html_table(std::ostringstream& h, const io::Table& t) {
 const char* style = R"(body{font-family:'DejaVu Sans',Helvetica,Arial,sans-serif;max-width:1180px;margin:2em auto;padding:0 1.5em;color:#1b1b1b;line-height:1.45}
 h1{border-bottom:2px solid #2166ac;padding-bottom:.3em}h2{margin-top:2em;border-bottom:1px solid #ccc;padding-bottom:.2em}
 nav ol{columns:2}table{border-collapse:collapse;font-size:.86em}th,td{border:1px solid #d0d0d0;padding:.25em .55em;vertical-align:top}
-th{background:#eef3f8;text-align:left;overflow-wrap:anywhere;max-width:9em}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+th{background:#eef3f8;text-align:left;overflow-wrap:break-word;max-width:9em}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 tbody tr:nth-child(even){background:#fafafa}figure{margin:1.2em 0}figcaption{font-weight:bold;margin-bottom:.4em}
 figure.plot figcaption{font-weight:normal;font-style:italic;margin-top:.3em}.scroll{overflow-x:auto}
 ul.meta{font-size:.85em;color:#444;margin:.2em 0 .5em}p.note{font-size:.85em;color:#555;margin:.2em 0}
