@@ -2,6 +2,7 @@
 // sweep (several k, the best per S_f). Both run the fine reference and the coarse runs side by
 // side, reuse cached runs, and write a table and figures.
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <set>
 #include <iostream>
@@ -65,6 +66,20 @@ slump::Study run(slump::StudyPlan plan) {
     return slump::run_study(plan, out.log);
 }
 
+// PASS, INCONCLUSIVE and FAIL among the judged ensembles (the unusable left out), in Verdict's order.
+std::array<std::size_t, 3> verdict_counts(const std::vector<slump::EnsembleVerdict>& deciding) {
+    std::array<std::size_t, 3> n{};
+    for (const auto& v : deciding)
+        if (v.unusable.empty()) ++n[static_cast<std::size_t>(v.overall)];
+    return n;
+}
+
+// "2 PASS, 0 FAIL, 1 INCONCLUSIVE of 3"
+std::string count_text(const std::array<std::size_t, 3>& n) {
+    return std::to_string(n[0]) + " PASS, " + std::to_string(n[2]) + " FAIL, " + std::to_string(n[1]) + " INCONCLUSIVE of " +
+           std::to_string(n[0] + n[1] + n[2]);
+}
+
 // Prints the tables (text, markdown, csv or json) and the files written; returns the exit code:
 // with gate, 0 PASS, 1 FAIL, 4 INCONCLUSIVE (the verdict of every ensemble together).
 int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& study, const std::string& stem, bool gate) {
@@ -86,11 +101,8 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
         std::cout << join_tables(tables, format);
     }
     if (format != io::Format::json && gate) {
-        std::size_t n[3] = {0, 0, 0};
-        for (const auto& v : study.deciding())
-            if (v.unusable.empty()) ++n[static_cast<int>(v.overall)];
-        std::cout << "\nverdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
-                  << " INCONCLUSIVE of " << n[0] + n[1] + n[2] << " judged (S_f, k) ensembles of " << plan.seeds << " seeds"
+        const auto n = verdict_counts(study.deciding());
+        std::cout << "\nverdict: " << stats::verdict_name(overall) << " — " << count_text(n) << " judged (S_f, k) ensembles of " << plan.seeds << " seeds"
                   << (study.has_control() ? ", baseline-corrected" : "") << "\n";
         for (const auto& l : study.limited) {
             std::cout << "S_f = " << format_short(l.sf) << ": GEOMETRY-LIMITED, not run (";
@@ -176,12 +188,8 @@ int check_runs_file(const Options& o) {
         std::cout << out.dump(2) << "\n";
     } else {
         std::cout << join_tables({table}, format);
-        std::size_t n[3] = {0, 0, 0};
-        for (const auto& v : verdicts.deciding())
-            if (v.unusable.empty()) ++n[static_cast<int>(v.overall)];
         std::cout << "\nruns read from " << display_path(o.runs) << " (none run; slump and spread judged, the profile not: no profiles in a runs file)\n"
-                  << "verdict: " << stats::verdict_name(overall) << " — " << n[0] << " PASS, " << n[2] << " FAIL, " << n[1]
-                  << " INCONCLUSIVE of " << n[0] + n[1] + n[2] << " judged S_f" << (verdicts.has_control() ? ", baseline-corrected" : ", raw") << "\n";
+                  << "verdict: " << stats::verdict_name(overall) << " — " << count_text(verdict_counts(verdicts.deciding())) << " judged S_f" << (verdicts.has_control() ? ", baseline-corrected" : ", raw") << "\n";
     }
     std::cerr << "wrote " << path.string() << "\n";
     return overall == stats::Verdict::pass ? 0 : overall == stats::Verdict::fail ? 1 : 4;

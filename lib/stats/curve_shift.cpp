@@ -115,28 +115,31 @@ double control_offset(const ResponseCurve& fine, const ResponseCurve& coarse) {
     return mean_of(coarse.control.y) - mean_of(fine.control.y);
 }
 
-namespace {
-long seed_at(const ResponseLevel& l, std::size_t i) { return l.seed.empty() ? static_cast<long>(i) : l.seed[i]; }
+std::vector<long> ResponseCurve::seeds() const {
+    std::vector<long> all;
+    auto add = [&](const ResponseLevel& l) {
+        for (std::size_t i = 0; i < l.y.size(); ++i) all.push_back(l.seed_at(i));
+    };
+    add(control);
+    for (const auto& l : levels) add(l);
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+}
 
+namespace {
 // The level's values of the drawn seeds, in the draw's order (a seed drawn twice twice).
 std::vector<double> values_of(const ResponseLevel& l, const std::vector<long>& drawn) {
     std::vector<double> y;
     for (long s : drawn)
         for (std::size_t i = 0; i < l.y.size(); ++i)
-            if (seed_at(l, i) == s) y.push_back(l.y[i]);
+            if (l.seed_at(i) == s) y.push_back(l.y[i]);
     return y;
 }
 }  // namespace
 
 ResponseCurve resample_by_seed(const ResponseCurve& c, std::mt19937_64& rng) {
-    std::vector<long> seeds;
-    auto collect = [&](const ResponseLevel& l) {
-        for (std::size_t i = 0; i < l.y.size(); ++i) seeds.push_back(seed_at(l, i));
-    };
-    for (const auto& l : c.levels) collect(l);
-    collect(c.control);
-    std::sort(seeds.begin(), seeds.end());
-    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    const std::vector<long> seeds = c.seeds();
     ResponseCurve r = c;
     if (seeds.empty()) return r;
     std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);

@@ -40,6 +40,7 @@ struct ResponseLevel {
     double x = 0;               // ln of the cohesion variable (for γ in N/m: ln γ)
     std::vector<double> y;      // the response, one value per seed
     std::vector<long> seed;     // the seed of each y (empty: y[i] is seed i)
+    long seed_at(std::size_t i) const { return seed.empty() ? static_cast<long>(i) : seed[i]; }
 };
 
 // A curve's levels (and its control) share their seeds: a seed's runs at every level are one unit
@@ -48,6 +49,7 @@ struct ResponseCurve {
     double sf = 1;                     // scale factor of its particles (fine: 1)
     std::vector<ResponseLevel> levels; // in any order
     ResponseLevel control;             // the response without cohesion, one value per seed (no y: none); x unused
+    std::vector<long> seeds() const;   // every seed of its levels and control, once each, ascending
 };
 
 // The curve with its seeds drawn with replacement, as many as it has: every level (and the control)

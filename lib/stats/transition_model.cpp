@@ -73,13 +73,14 @@ std::vector<double> shrunk_variances(const std::vector<std::vector<double>>& gro
     return out;
 }
 
-// A level is on the slumped branch when none of its runs stood. `classified` decides that (the same
-// curves, or the full ones when a jackknife has taken a seed out: the branch then keeps its levels,
-// so that the jackknife measures the runs' noise, not a level that changes sides).
+// A level is on the slumped branch when none of its runs stood.
 bool on_branch(const ResponseLevel& l, const TransitionSettings& s) {
     return std::none_of(l.y.begin(), l.y.end(), [&](double y) { return y < s.stands_below; });
 }
 
+// The runs of the curves. `classified` says which levels are on the branch: the same curves, or the
+// full ones when a jackknife has taken a seed out (the branch then keeps its levels, so that the
+// jackknife measures the runs' noise, not a level that changes sides).
 Data gather(const std::vector<const ResponseCurve*>& curves, const TransitionSettings& s, const std::vector<const ResponseCurve*>& classified) {
     Data d;
     std::size_t fine_slumped_levels = 0;
@@ -268,9 +269,11 @@ struct Maximum {
     }
 };
 
+constexpr double grid_step = 0.1;  // of the profile's search grid in k
+
 Maximum maximise(const Data& d, const TransitionSettings& s, double lo, double hi) {
     Maximum m;
-    const double step = 0.1;
+    const double step = grid_step;
     const int n = std::max(1, static_cast<int>(std::ceil((hi - lo) / step)));
     Probit warm;
     for (int i = 0; i <= n; ++i) {
@@ -292,20 +295,6 @@ Maximum maximise(const Data& d, const TransitionSettings& s, double lo, double h
     return m;
 }
 
-long seed_of(const ResponseLevel& l, std::size_t i) { return l.seed.empty() ? static_cast<long>(i) : l.seed[i]; }
-
-std::vector<long> seeds_of(const ResponseCurve& c) {
-    std::vector<long> seeds;
-    auto add = [&](const ResponseLevel& l) {
-        for (std::size_t i = 0; i < l.y.size(); ++i) seeds.push_back(seed_of(l, i));
-    };
-    add(c.control);
-    for (const auto& l : c.levels) add(l);
-    std::sort(seeds.begin(), seeds.end());
-    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-    return seeds;
-}
-
 // The curve without a group of seeds' runs (a level left empty stays, empty, so that levels keep
 // their index).
 ResponseCurve without_seeds(const ResponseCurve& c, const std::vector<long>& gone) {
@@ -313,7 +302,7 @@ ResponseCurve without_seeds(const ResponseCurve& c, const std::vector<long>& gon
         ResponseLevel out;
         out.x = l.x;
         for (std::size_t i = 0; i < l.y.size(); ++i)
-            if (std::find(gone.begin(), gone.end(), seed_of(l, i)) == gone.end()) out.y.push_back(l.y[i]), out.seed.push_back(seed_of(l, i));
+            if (std::find(gone.begin(), gone.end(), l.seed_at(i)) == gone.end()) out.y.push_back(l.y[i]), out.seed.push_back(l.seed_at(i));
         return out;
     };
     ResponseCurve out;
@@ -331,7 +320,7 @@ void seed_jackknife(const std::vector<const ResponseCurve*>& curves, const Trans
     double variance = 0;
     std::size_t dof = 0;
     for (std::size_t c = 0; c < curves.size(); ++c) {
-        const auto seeds = seeds_of(*curves[c]);
+        const auto seeds = curves[c]->seeds();
         if (seeds.size() < 2) continue;
         const std::size_t groups = std::min<std::size_t>(seeds.size(), 10);
         std::vector<double> k;
@@ -407,7 +396,7 @@ TransitionFit fit_set(const std::vector<const ResponseCurve*>& curves, double sf
     };
     f.k = k_hat;
     f.profile_ci = f.ci = {crossing(-1), crossing(+1)};
-    const double margin = 0.1 + 1e-9;
+    const double margin = grid_step + 1e-9;
     f.determined = f.ci.low > s.k_min + margin && f.ci.high < s.k_max - margin;
     if (f.determined) seed_jackknife(curves, s, f);
     f.determined = f.ci.low > s.k_min + margin && f.ci.high < s.k_max - margin;
