@@ -32,6 +32,9 @@ struct ContactLaw {
 
     explicit ContactLaw(const Material& m, Cohesion c = {})
         : normal(m), tangential(m), cohesion(std::move(c)), rolling(m) {}
+    // With a rolling law built apart (RollingChosen takes the scene's choice).
+    ContactLaw(const Material& m, Cohesion c, Rolling r)
+        : normal(m), tangential(m), cohesion(std::move(c)), rolling(std::move(r)) {}
 
     // A pair's contact history. Lost = Dissipation: as the ledger needs it; NoDissipation: without
     // the springs' last stiffnesses (16 bytes less per pair with both springs).

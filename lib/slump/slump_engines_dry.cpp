@@ -1,10 +1,10 @@
-// The slump protocol's engines for dry scenes: no cohesion code in the force loop (each rolling law, with and
-// without the ledger): one cohesion law per file, so that they compile in parallel.
+// The slump protocol's engines for dry scenes: no cohesion code in the force loop: the lines of the engine list
+// (slump/compiled_engines.hpp) with this cohesion law, one cohesion law per file so that they compile in parallel.
 #include "slump/slump_protocol.hpp"
 
 namespace demscale::slump::protocol {
 
-template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, CohesionNone, Particles, bool, const std::function<void(const SlumpProgress&)>&,
-                                         const SlumpPhases&);
+template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const EngineLine&, CohesionNone, Particles, bool,
+                                         const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

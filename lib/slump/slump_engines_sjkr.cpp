@@ -1,10 +1,10 @@
-// The slump protocol's engines for dry adhesive scenes: SJKR adhesion (each rolling law, with and
-// without the ledger): one cohesion law per file, so that they compile in parallel.
+// The slump protocol's engines for dry adhesive scenes: SJKR adhesion: the lines of the engine list
+// (slump/compiled_engines.hpp) with this cohesion law, one cohesion law per file so that they compile in parallel.
 #include "slump/slump_protocol.hpp"
 
 namespace demscale::slump::protocol {
 
-template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, CohesionSjkr, Particles, bool, const std::function<void(const SlumpProgress&)>&,
-                                         const SlumpPhases&);
+template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, CohesionSjkr, Particles, bool,
+                                         const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

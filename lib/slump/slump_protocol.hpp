@@ -1,6 +1,7 @@
 // The slump protocol's engine runs, as templates of the contact law: settle, lift, spread, the
-// poured fill, checkpoints. run_protocol<Cohesion> is compiled once per cohesion law, each in its
-// own file (slump_engines_*.cpp), so that the engines build in parallel; slump_run.cpp chooses.
+// poured fill, checkpoints. run_protocol<Cohesion> compiles the lines of the engine list
+// (slump/compiled_engines.hpp) with that cohesion law, each cohesion law in its own file
+// (slump_engines_*.cpp), so that the engines build in parallel; slump_run.cpp chooses.
 // Included by those files and slump_run.cpp only.
 #pragma once
 
@@ -11,6 +12,9 @@
 #include <cstdio>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "core/interrupt.hpp"
 #include "dem/checkpoint.hpp"
@@ -19,6 +23,7 @@
 #include "dem/simulation.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
+#include "slump/compiled_engines.hpp"
 #include "slump/fill.hpp"
 #include "slump/motion.hpp"
 #include "slump/pour.hpp"
@@ -214,35 +219,57 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     return res;
 }
 
-// The whole protocol with this cohesion law under the scene's rolling law, with or without the
-// ledger; pour: fill the cone by pouring first (else `particles` is the start).
 template <class Cohesion>
-SlumpResult run_protocol(const SlumpScene& s, Cohesion cohesion, Particles particles, bool pour,
+inline constexpr CohesionChoice cohesion_of = std::is_same_v<Cohesion, CohesionLiquidBridge> ? CohesionChoice::liquid_bridge
+                                               : std::is_same_v<Cohesion, CohesionSjkr>      ? CohesionChoice::sjkr
+                                                                                               : CohesionChoice::none;
+
+// The engine of one line of the list (slump/compiled_engines.hpp): its contact law, the pour
+// (without the ledger) when asked, then the protocol.
+template <EngineLine Line, class Cohesion>
+SlumpResult run_line(const SlumpScene& s, Cohesion cohesion, Particles particles, bool pour,
+                     const std::function<void(const SlumpProgress&)>& progress, const SlumpPhases& phases) {
+    using Rolling = std::conditional_t<Line.rolling == RollingEngine::none, RollingNone,
+                                       std::conditional_t<Line.rolling == RollingEngine::epsd, RollingEpsd, RollingChosen>>;
+    using Law = ContactLaw<NormalHertz, TangentialMindlin, Cohesion, Rolling>;
+    Law law = [&] {
+        if constexpr (Line.rolling == RollingEngine::run_time) return Law(s.material, std::move(cohesion), RollingChosen(s.material, s.rolling_model));
+        else return Law(s.material, std::move(cohesion));
+    }();
+    ProtocolState st;
+    if (pour) {  // its wall time counts in the run's
+        const auto t0 = std::chrono::steady_clock::now();
+        particles = pour_with(s, law, progress, phases.spatial_sort, st.pour_time, st.pour_steps);
+        st.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    return run_with<Line.ledger>(s, std::move(law), std::move(particles), progress, phases, st);
+}
+
+// The whole protocol with this cohesion law, on the engine of `line` (a line of the list with this
+// cohesion law: listed_engine chose it); pour: fill the cone by pouring first (else `particles` is
+// the start). Every line of the list with this cohesion law is compiled here, and only those.
+template <class Cohesion>
+SlumpResult run_protocol(const SlumpScene& s, const EngineLine& line, Cohesion cohesion, Particles particles, bool pour,
                          const std::function<void(const SlumpProgress&)>& progress, const SlumpPhases& phases) {
-    auto run = [&](auto law) {
-        ProtocolState st;
-        if (pour) {  // its wall time counts in the run's
-            const auto t0 = std::chrono::steady_clock::now();
-            particles = pour_with(s, law, progress, phases.spatial_sort, st.pour_time, st.pour_steps);
-            st.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        }
-        return phases.energy_ledger ? run_with<true>(s, std::move(law), std::move(particles), progress, phases, st)
-                                    : run_with<false>(s, std::move(law), std::move(particles), progress, phases, st);
-    };
-    if (!s.rolling_resistance) return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion>(s.material, cohesion));
-    if (s.rolling_model == RollingModel::constant_torque)
-        return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingConstantTorque>(s.material, cohesion));
-    if (s.rolling_model == RollingModel::epsd2)
-        return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd2>(s.material, cohesion));
-    return run(ContactLaw<NormalHertz, TangentialMindlin, Cohesion, RollingEpsd>(s.material, cohesion));
+    SlumpResult result;
+    bool ran = false;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        auto try_line = [&]<EngineLine Line>() {
+            if constexpr (Line.cohesion == cohesion_of<Cohesion>)
+                if (!ran && Line == line) result = run_line<Line>(s, std::move(cohesion), std::move(particles), pour, progress, phases), ran = true;
+        };
+        (try_line.template operator()<compiled_engines[I]>(), ...);
+    }(std::make_index_sequence<std::size(compiled_engines)>{});
+    if (!ran) throw std::logic_error("run_protocol: " + engine_name(line) + " is not a compiled engine of this cohesion law");
+    return result;
 }
 
 // Built in slump_engines_*.cpp, one file each.
-extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, CohesionNone, Particles, bool,
+extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const EngineLine&, CohesionNone, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
-extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, CohesionLiquidBridge, Particles, bool,
+extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, CohesionLiquidBridge, Particles, bool,
                                                                const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
-extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, CohesionSjkr, Particles, bool,
+extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, CohesionSjkr, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

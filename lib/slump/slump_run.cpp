@@ -32,6 +32,7 @@ double SlumpResult::energy_balance_error() const {
 
 SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                       SlumpPhases phases) {
+    const EngineLine line = listed_engine(s, phases.energy_ledger);  // before any work: exit 2 when not compiled
     check_slump_time_step(s, force_dt);
     const double critical = binding_time_scale(s);
     // A resumed run takes its particles from the checkpoint; the lattice fill only sizes the engine.
@@ -45,11 +46,12 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     if (s.wet && smallest != particles.radius.end() && *smallest != *largest)
         throw InputError("--start", "radii from " + format_short(*smallest * 1e3) + " to " + format_short(*largest * 1e3) + " mm",
                          "spheres of one radius for a wet scene (equal-sphere bridges; docs/models/liquid-bridge.md)");
-    // One explicit choice of the cohesion law; the rolling law and the ledger are chosen inside.
+    // The cohesion law built here; its file's engines take the rolling law and the ledger from the line.
     using protocol::run_protocol;
-    res = s.wet                 ? run_protocol(s, scene_bridge(s, s.radius_m), std::move(particles), pour, progress, phases)
-          : sjkr_part.active(s) ? run_protocol(s, CohesionSjkr{s.cohesion_energy_density}, std::move(particles), pour, progress, phases)
-                                : run_protocol(s, CohesionNone{}, std::move(particles), pour, progress, phases);
+    res = line.cohesion == CohesionChoice::liquid_bridge ? run_protocol(s, line, scene_bridge(s, s.radius_m), std::move(particles), pour, progress, phases)
+          : line.cohesion == CohesionChoice::sjkr
+              ? run_protocol(s, line, CohesionSjkr{s.cohesion_energy_density}, std::move(particles), pour, progress, phases)
+              : run_protocol(s, line, CohesionNone{}, std::move(particles), pour, progress, phases);
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

@@ -241,6 +241,11 @@ case $case_name in
       >"$work/mixed.csv"
     expect 2 '--start = radii from 2.2 to 3 mm: accepted spheres of one radius for a wet scene' -- \
       "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --start "$work/mixed.csv" --out "$work/s"
+    [ ! -e "$work/s" ] || fail "a refused run created output"
+    # The ledger with a rolling law the engine list compiles none for: refused naming the list.
+    { cat "$src/data/scenes/small_wet.toml"; printf '[contact]\nrolling_model = "epsd2"\nrolling_damping = 0\n'; } >"$work/epsd2.toml"
+    expect 2 'the contact laws liquid bridge, epsd2 rolling, energy ledger: accepted one of the compiled engines \(lib/slump/compiled_engines.hpp\): no cohesion, epsd rolling;' -- \
+      "$demscale" slump --scene "$work/epsd2.toml" --energy --out "$work/s"
     [ ! -e "$work/s" ] || fail "a refused run created output" ;;
   check_exponent_pass_and_fail)
     small=(--scene "$src/data/scenes/small_wet.toml" --sf 1.4 --cache "$work/cache" --out "$work/c" --no-png)

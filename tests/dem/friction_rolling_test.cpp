@@ -238,3 +238,64 @@ TEST_CASE("The plastic limit test decides as |x| > limit does, without a root we
     CHECK(beyond_limit(std::nan(""), 1.0) == 0.0);
     CHECK(beyond_limit(1.0, std::nan("")) == 0.0);
 }
+
+namespace {
+// One random touching contact: a pair of radius 0.3-1.5 mm, overlap 0-2 µm, spinning apart.
+ContactPair random_rolling_contact(std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0, 1), w(-30, 30);
+    ContactPair c;
+    c.r_eff = (0.3 + 1.2 * u(rng)) * 1e-3, c.sqrt_r_eff = std::sqrt(c.r_eff);
+    c.m_eff = 1e-5 * (0.5 + u(rng)), c.sqrt_m_eff = std::sqrt(c.m_eff);
+    c.overlap = 2e-6 * u(rng), c.contact_radius = std::sqrt(c.r_eff * c.overlap);
+    c.normal = Vec3(w(rng), w(rng), w(rng)).normalized();
+    c.v_rel = c.v_tangential = Vec3::Zero(), c.v_normal = 0;
+    c.w_rel = Vec3(w(rng), w(rng), w(rng)), c.dt = 1e-6;
+    c.rolling_compliance = 1.0 / (1e-9 * (0.5 + u(rng)));
+    return c;
+}
+
+// Steps of law `chosen` and of `alone` on the same random contacts, with the ledger (Dissipation) or
+// without: the torques, the springs' histories and what they book must be the same bits.
+template <class Lost, class Alone>
+void same_bits_as_alone(RollingModel model, const Alone& alone, const Material& m) {
+    const RollingChosen chosen(m, model);
+    std::mt19937 rng(7);
+    typename RollingChosen::template StateFor<Lost> s_chosen;
+    typename Alone::template StateFor<Lost> s_alone;
+    Lost lost_chosen, lost_alone;
+    const double kn = 2e4, kt = 3e4;
+    for (int n = 0; n < 2000; ++n) {
+        const ContactPair c = random_rolling_contact(rng);
+        const double fn = kn * c.overlap * (n % 3 == 0 ? 50.0 : 1.0);  // every third step far from the limit
+        const Vec3 a = chosen.torque(c, kn, kt, fn, s_chosen, lost_chosen);
+        const Vec3 b = alone.torque(c, kn, kt, fn, s_alone, lost_alone);
+        REQUIRE(a == b);
+        if constexpr (requires { s_alone.torque; }) REQUIRE(s_chosen.torque == s_alone.torque);
+        REQUIRE(chosen.stored_energy(c, kn, kt, s_chosen) == alone.stored_energy(c, kn, kt, s_alone));
+        if (n % 97 == 0) chosen.release(s_chosen, lost_chosen), alone.release(s_alone, lost_alone);
+    }
+    if constexpr (books_losses<Lost>) {
+        CHECK(lost_chosen.rolling == lost_alone.rolling);
+        CHECK(lost_chosen.spring_stiffness == lost_alone.spring_stiffness);
+        CHECK(lost_chosen.rolling > 0);
+    }
+}
+}  // namespace
+
+TEST_CASE("The rolling law chosen at run time steps to the same bits as each law compiled alone", "[dem][rolling]") {
+    Material m = wall_material(0.5, 0.1);
+    m.rolling_damping = 0.3;
+    for (const bool ledger : {false, true}) {
+        INFO((ledger ? "with" : "without") << " the ledger");
+        auto check = [&](RollingModel model, const auto& alone) {
+            if (ledger) same_bits_as_alone<Dissipation>(model, alone, m);
+            else same_bits_as_alone<NoDissipation>(model, alone, m);
+        };
+        check(RollingModel::epsd, RollingEpsd(m));
+        check(RollingModel::epsd2, RollingEpsd2(m));
+        check(RollingModel::constant_torque, RollingConstantTorque(m));
+    }
+    // The engine reads η_r for the rolling inertia: constant torque has no dashpot.
+    CHECK(RollingChosen(m, RollingModel::epsd).eta_r == 0.3);
+    CHECK(RollingChosen(m, RollingModel::constant_torque).eta_r == 0.0);
+}

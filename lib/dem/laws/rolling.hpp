@@ -61,13 +61,17 @@ struct RollingConstantTorque {
     void release(State&, Lost&) const {}
 };
 
+// A rolling spring's history. Lost = Dissipation: with the ledger's k_r of the last step; NoDissipation: without.
+template <class Lost>
+struct RollingSpringState {
+    Vec3 torque = Vec3::Zero();                          // elastic rolling torque carried between steps, N m
+    [[no_unique_address]] LastStiffness<Lost> stiffness; // k_r at the last step, N m/rad
+};
+
 template <class Stiffness>
 struct RollingSpring {
-    template <class Lost>  // Dissipation: with the ledger's k_r of the last step; NoDissipation: without
-    struct StateFor {
-        Vec3 torque = Vec3::Zero();                          // elastic rolling torque carried between steps, N m
-        [[no_unique_address]] LastStiffness<Lost> stiffness; // k_r at the last step, N m/rad
-    };
+    template <class Lost>
+    using StateFor = RollingSpringState<Lost>;
     using State = StateFor<Dissipation>;
     double mu_r, eta_r;
 
@@ -132,6 +136,43 @@ struct IwashitaOdaRollingStiffness {
 
 using RollingEpsd = RollingSpring<AiRollingStiffness>;
 using RollingEpsd2 = RollingSpring<IwashitaOdaRollingStiffness>;
+
+// The scene's rolling law (RollingModel), chosen at run time: one compiled engine serves all three,
+// each model's arithmetic unchanged (the same bits as the law compiled alone). The choice costs
+// 0.6-2.2 % more instructions than RollingEpsd compiled alone (docs/performance.md), so the slump
+// engines keep that one apart; a constant-torque run carries the spring's unused history (24 bytes
+// a pair, 32 with the ledger).
+struct RollingChosen {
+    template <class Lost>
+    using StateFor = RollingSpringState<Lost>;
+    using State = StateFor<Dissipation>;
+    RollingModel model;
+    RollingEpsd epsd;
+    RollingEpsd2 epsd2;
+    RollingConstantTorque constant;
+    double eta_r;  // the chosen law's dashpot η_r (constant torque has none): the engine sets I_r from it
+
+    RollingChosen(const Material& m, RollingModel chosen)
+        : model(chosen), epsd(m), epsd2(m), constant(m), eta_r(chosen == RollingModel::constant_torque ? 0.0 : m.rolling_damping) {}
+
+    template <class Lost>
+    DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force,
+                             StateFor<Lost>& s, Lost& lost) const {
+        if (model == RollingModel::epsd) return epsd.torque(c, normal_stiffness, tangential_stiffness, normal_force, s, lost);
+        if (model == RollingModel::epsd2) return epsd2.torque(c, normal_stiffness, tangential_stiffness, normal_force, s, lost);
+        RollingConstantTorque::State stateless;
+        return constant.torque(c, normal_stiffness, tangential_stiffness, normal_force, stateless, lost);
+    }
+    // Constant torque leaves the spring's history at zero, so the spring's release books nothing for it.
+    template <class Lost>
+    void release(StateFor<Lost>& s, Lost& lost) const { epsd.release(s, lost); }
+    template <class Lost>
+    double stored_energy(const ContactPair& c, double normal_stiffness, double tangential_stiffness, const StateFor<Lost>& s) const {
+        if (model == RollingModel::epsd) return epsd.stored_energy(c, normal_stiffness, tangential_stiffness, s);
+        if (model == RollingModel::epsd2) return epsd2.stored_energy(c, normal_stiffness, tangential_stiffness, s);
+        return 0.0;
+    }
+};
 
 // Parameters (docs/models/rolling.md): μ_r for every rolling model; η_r for Ai's dashpot (epsd).
 inline constexpr Parameter rolling_parameters[] = {

@@ -1,0 +1,39 @@
+#include "slump/compiled_engines.hpp"
+
+#include <algorithm>
+
+#include "core/input_error.hpp"
+
+namespace demscale::slump {
+
+CohesionChoice cohesion_choice(const SlumpScene& s) {
+    if (s.wet) return CohesionChoice::liquid_bridge;
+    return dem::sjkr_part.active(s) ? CohesionChoice::sjkr : CohesionChoice::none;
+}
+
+RollingEngine rolling_engine(const SlumpScene& s) {
+    if (!s.rolling_resistance) return RollingEngine::none;
+    return s.rolling_model == RollingModel::epsd ? RollingEngine::epsd : RollingEngine::run_time;
+}
+
+std::string engine_name(const EngineLine& line, const SlumpScene* s) {
+    std::string name = line.cohesion == CohesionChoice::liquid_bridge ? "liquid bridge"
+                       : line.cohesion == CohesionChoice::sjkr        ? "SJKR adhesion"
+                                                                      : "no cohesion";
+    if (line.rolling == RollingEngine::none) name += ", free rolling";
+    else if (line.rolling == RollingEngine::epsd) name += ", epsd rolling";
+    else if (s) name += s->rolling_model == RollingModel::epsd2 ? ", epsd2 rolling" : ", constant_torque rolling";
+    else name += ", epsd2 or constant_torque rolling";
+    return name + (line.ledger ? ", energy ledger" : "");
+}
+
+EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list) {
+    const EngineLine wanted{cohesion_choice(s), rolling_engine(s), ledger};
+    if (std::find(list.begin(), list.end(), wanted) != list.end()) return wanted;
+    std::string lines;
+    for (const auto& line : list) lines += (lines.empty() ? "" : "; ") + engine_name(line);
+    throw InputError(s.source.empty() ? "scene" : s.source, "the contact laws " + engine_name(wanted, &s),
+                     "one of the compiled engines (lib/slump/compiled_engines.hpp): " + lines);
+}
+
+}  // namespace demscale::slump

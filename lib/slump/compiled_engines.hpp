@@ -1,0 +1,63 @@
+// The slump engines that are compiled: one line each, the one list (as LIGGGHTS keeps its compiled
+// combinations in one whitelist). Every engine has Hertz normal and Mindlin tangential contact; a
+// line names the cohesion law, the rolling law and whether the energy ledger books (slump
+// --energy). A scene whose choice is on no line is refused, exit 2, naming the choice and this
+// list. Each line is one instantiation of the protocol's engine, compiled in the
+// slump_engines_*.cpp of its cohesion law (compile cost: docs/development.md). Ai's rolling law
+// (epsd, every shipped scene's) keeps an engine of its own: run-time choice costs it 2.2 % more
+// instructions dry (docs/performance.md); epsd2 and constant torque share one (dem::RollingChosen),
+// without the ledger.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "slump/slump_scene.hpp"
+
+namespace demscale::slump {
+
+enum class CohesionChoice { none, liquid_bridge, sjkr };
+// none: free rolling; epsd: Ai's spring and dashpot; run_time: epsd2 or constant torque, as the scene says.
+enum class RollingEngine { none, epsd, run_time };
+
+struct EngineLine {
+    CohesionChoice cohesion;
+    RollingEngine rolling;
+    bool ledger;  // the energy ledger books every loss
+    friend constexpr bool operator==(const EngineLine&, const EngineLine&) = default;
+};
+
+inline constexpr EngineLine compiled_engines[] = {
+    // cohesion                     rolling                  ledger
+    {CohesionChoice::none,          RollingEngine::epsd,     false},  // the dry control of every study
+    {CohesionChoice::none,          RollingEngine::none,     false},
+    {CohesionChoice::none,          RollingEngine::run_time, false},
+    {CohesionChoice::none,          RollingEngine::epsd,     true},
+    {CohesionChoice::none,          RollingEngine::none,     true},
+    {CohesionChoice::liquid_bridge, RollingEngine::epsd,     false},  // the wet reference scene
+    {CohesionChoice::liquid_bridge, RollingEngine::none,     false},
+    {CohesionChoice::liquid_bridge, RollingEngine::run_time, false},
+    {CohesionChoice::liquid_bridge, RollingEngine::epsd,     true},
+    {CohesionChoice::liquid_bridge, RollingEngine::none,     true},
+    {CohesionChoice::sjkr,          RollingEngine::epsd,     false},
+    {CohesionChoice::sjkr,          RollingEngine::none,     false},
+    {CohesionChoice::sjkr,          RollingEngine::run_time, false},
+    {CohesionChoice::sjkr,          RollingEngine::epsd,     true},
+    {CohesionChoice::sjkr,          RollingEngine::none,     true},
+};
+
+// The cohesion law a scene chooses: a liquid bridge when wet, SJKR adhesion when it gives a cohesion
+// energy density, none otherwise.
+CohesionChoice cohesion_choice(const SlumpScene& s);
+
+// The rolling engine a scene chooses.
+RollingEngine rolling_engine(const SlumpScene& s);
+
+// "liquid bridge, epsd rolling, energy ledger": a line for people (with the scene: its run-time rolling law).
+std::string engine_name(const EngineLine& line, const SlumpScene* s = nullptr);
+
+// The line that runs this scene (with the ledger or not); an InputError naming the scene's choice
+// and every line of `list` when none matches.
+EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list = compiled_engines);
+
+}  // namespace demscale::slump
