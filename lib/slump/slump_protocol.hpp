@@ -102,6 +102,66 @@ Particles pour_with(const SlumpScene& s, const Law& law, const std::function<voi
     });
 }
 
+// The cone's lift, from the protocol's state: it starts moving at lift_start and stops at lift_end.
+template <class Sim>
+void schedule_lift(Sim& sim, const ProtocolState& st) {
+    auto& cone = std::get<FrustumWall>(sim.walls()[1]);
+    cone.move_start = st.lift_start, cone.move_end = st.lift_end;
+}
+
+// A resumed run: the protocol's state and history from the checkpoint `path`, the cone as it
+// stood, then the engine's own state. Refused (naming --resume) unless an interrupted run of the
+// scene with this key wrote it.
+template <class Sim>
+void resume_checkpoint(Sim& sim, const std::filesystem::path& path, const std::string& key, ProtocolState& st, std::vector<TimePoint>& history) {
+    const std::string accepted = "a checkpoint an interrupted run of this scene wrote (scene key " + key + ")";
+    std::istringstream in(io::read_input_file("--resume", path.string(), accepted), std::ios::binary);
+    try {
+        CheckpointReader r(in, slump_checkpoint_tag, "another format");
+        std::array<char, 16> stored_key{};
+        r.value(stored_key);
+        if (std::string(stored_key.data(), 16) != key) throw InputError("--resume", path.string(), accepted);
+        r.value(st);
+        r.array(history);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::runtime_error&) {  // another format, or truncated
+        throw InputError("--resume", path.string(), accepted);
+    }
+    if (st.phase >= 1) schedule_lift(sim, st);
+    if (st.phase >= 2) sim.remove_wall(1);
+    sim.load(in);
+}
+
+// Stops the run with Interrupted after its last whole step, first writing the checkpoint `path`
+// (atomically) when one is asked for.
+template <class Sim>
+[[noreturn]] void stop_with_checkpoint(Sim& sim, const std::filesystem::path& path, const std::string& key, const ProtocolState& st,
+                                       const std::vector<TimePoint>& history) {
+    char where[120];
+    std::snprintf(where, sizeof where, "interrupted at t = %.4f s (step %zu)", sim.time(), sim.steps());
+    if (path.empty()) throw Interrupted(where, "");
+    std::ostringstream out(std::ios::binary);
+    CheckpointWriter w(out, slump_checkpoint_tag);
+    std::array<char, 16> stored_key{};
+    std::copy_n(key.begin(), 16, stored_key.begin());
+    w.value(stored_key), w.value(st), w.array(history);
+    sim.save(out);
+    io::write_file_atomically(path, out.str());
+    throw Interrupted(where, path.string());
+}
+
+// What every run reports at its end, measured on its final state (in the input's order).
+inline void finish(SlumpResult& res, const Particles& end_state, const ProtocolState& st, const SlumpScene& s, std::size_t steps,
+                   double wall_s) {
+    res.motion = summarize_motion(end_state, res.particles, s.rest_speed_m_per_s);
+    res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
+    res.steps = steps;
+    res.final = measure_pile(end_state, s);
+    res.final_state = end_state.mobile();
+    res.wall_s = wall_s;
+}
+
 template <bool Ledger, class Law>
 SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const std::function<void(const SlumpProgress&)>& progress,
                      const SlumpPhases& phases, ProtocolState st = {}) {
@@ -113,25 +173,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     Simulation<Law, Ledger> sim(std::move(particles), std::move(law), slump_walls(s), Vec3(0, 0, -s.gravity), s.dt_s, s.skin_m,
                                 phases.spatial_sort);
     const std::string key = scene_key(s);
-    auto schedule_lift = [&] { std::get<FrustumWall>(sim.walls()[1]).move_start = st.lift_start, std::get<FrustumWall>(sim.walls()[1]).move_end = st.lift_end; };
     if (!phases.resume.empty()) {
-        const std::string accepted = "a checkpoint an interrupted run of this scene wrote (scene key " + key + ")";
-        std::istringstream in(io::read_input_file("--resume", phases.resume.string(), accepted), std::ios::binary);
-        try {
-            CheckpointReader r(in, slump_checkpoint_tag, "another format");
-            std::array<char, 16> stored_key{};
-            r.value(stored_key);
-            if (std::string(stored_key.data(), 16) != key) throw InputError("--resume", phases.resume.string(), accepted);
-            r.value(st);
-            r.array(res.history);
-        } catch (const InputError&) {
-            throw;
-        } catch (const std::runtime_error&) {  // another format, or truncated
-            throw InputError("--resume", phases.resume.string(), accepted);
-        }
-        if (st.phase >= 1) schedule_lift();
-        if (st.phase >= 2) sim.remove_wall(1);
-        sim.load(in);
+        resume_checkpoint(sim, phases.resume, key, st, res.history);
         res.particles = st.pile;
     }
     auto wall_time = [&] { return st.wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
@@ -156,18 +199,8 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     };
     // Called between steps when SIGINT/SIGTERM arrived: the state after the last whole step.
     auto stop_here = [&] {
-        char where[120];
-        std::snprintf(where, sizeof where, "interrupted at t = %.4f s (step %zu)", sim.time(), sim.steps());
-        if (phases.checkpoint.empty()) throw Interrupted(where, "");
         st.wall_s = wall_time();
-        std::ostringstream out(std::ios::binary);
-        CheckpointWriter w(out, slump_checkpoint_tag);
-        std::array<char, 16> stored_key{};
-        std::copy_n(key.begin(), 16, stored_key.begin());
-        w.value(stored_key), w.value(st), w.array(res.history);
-        sim.save(out);
-        io::write_file_atomically(phases.checkpoint, out.str());
-        throw Interrupted(where, phases.checkpoint.string());
+        stop_with_checkpoint(sim, phases.checkpoint, key, st, res.history);
     };
     auto rest = [&](const std::string& phase, double end) {
         return run_until_rest(
@@ -180,19 +213,14 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
         if (phases.fill_measures) st.fill = measure_fill(settled, s);
         st.initial_height = measure_pile(settled, s).height;
         if (phases.settle_only) {
-            res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
-            res.motion = summarize_motion(settled, res.particles, s.rest_speed_m_per_s);
             res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height;
-            res.steps = sim.steps();
-            res.final = measure_pile(settled, s);
-            res.final_state = settled.mobile();
-            res.wall_s = wall_time();
+            finish(res, settled, st, s, sim.steps(), wall_time());
             return res;
         }
         st.phase = 1, st.still_since = -1;
         st.lift_start = sim.time();
         st.lift_end = sim.time() + s.lift_height_m / s.lift_speed_m_per_s;
-        schedule_lift();
+        schedule_lift(sim, st);
     }
     if (st.phase == 1) {
         while (sim.time() < st.lift_end) {
@@ -207,15 +235,9 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.came_to_rest = rest("spread", st.lifted_at + s.spread_time_s);
     res.settled = st.settled, res.settle_end = st.settle_end, res.initial_height = st.initial_height, res.lift_end = st.lifted_at;
     res.rest_since = res.came_to_rest ? st.still_since : -1;
-    const Particles end_state = sim.in_input_order();
-    res.motion = summarize_motion(end_state, res.particles, s.rest_speed_m_per_s);
-    res.fill = st.fill, res.pour_time = st.pour_time, res.pour_steps = st.pour_steps;
     res.end = sim.time();
-    res.steps = sim.steps();
-    res.final = measure_pile(end_state, s);
-    res.final_state = end_state.mobile();
     res.windows_all_threads = sim.governor().windows(true), res.windows_one_thread = sim.governor().windows(false);
-    res.wall_s = wall_time();
+    finish(res, sim.in_input_order(), st, s, sim.steps(), wall_time());
     return res;
 }
 
