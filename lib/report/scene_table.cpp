@@ -1,6 +1,7 @@
 #include "report/scene_table.hpp"
 
 #include "core/input_error.hpp"
+#include "dem/bridge_law.hpp"
 
 namespace demscale::report {
 
@@ -22,13 +23,14 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
                               : s.rolling_model == slump::RollingModel::epsd2        ? "epsd2 (k_r = k_t R*^2)"
                               : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"
                                                                                        : "epsd (Ai's model C, with dashpot)");
-    const bool exact = s.particle_curve == bridge::CurveSource::exact;
-    say("bridge model", !s.wet  ? "none (dry)"
-                        : exact ? "table (the exact Young-Laplace bridge at the scene's V^ and theta)"
-                                : std::string(bridge::to_string(s.bridge.variant)) + ", rupture " + std::string(bridge::to_string(s.bridge.rupture)));
-    say("bridges to the floor and cone", !s.wet_walls                                 ? "no"
-                                         : s.wall_curve == bridge::CurveSource::exact ? "yes, the exact sphere-plane bridge (table)"
-                                                                                      : "yes, Mikami's sphere-wall fit (mikami1998)");
+    // Each curve source's own row (bridge/curve_sources.hpp); a fit also names its rupture law.
+    const auto& particle = dem::particle_curve_source(s);
+    say("bridge model", !s.wet ? "none (dry)"
+                               : std::string(particle.value) + ": " + std::string(particle.label) +
+                                     (s.particle_curve == bridge::CurveSource::fit ? ", rupture " + std::string(bridge::to_string(s.bridge.rupture)) : ""));
+    say("bridges to the floor and cone", !s.wet || !s.wet_walls ? "no"
+                                                                : "yes, " + std::string(dem::wall_curve_source(s).value) + ": " +
+                                                                      std::string(dem::wall_curve_source(s).label));
     if (s.wet && s.viscosity_pa_s > 0)
         say("normal lubrication", s.lubrication == dem::Lubrication::finite_volume
                                       ? "finite volume (Pitois et al. 2000): squeezed out to the meniscus"

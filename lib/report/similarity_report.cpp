@@ -25,6 +25,7 @@
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
 #include "slump/bridge_warnings.hpp"
+#include "dem/bridge_law.hpp"
 #include "slump/scene_bridges.hpp"
 #include "slump/slump_files.hpp"
 #include "slump/study.hpp"
@@ -277,9 +278,9 @@ Section bridges_section(const ReportOptions& o, const slump::SlumpScene& scene, 
         format_short(f_published * 1e3) + " mN; no sphere-sphere bridge can exceed 2 pi R gamma cos(theta) = " +
         format_short(bound * 1e3) + " mN. The printed form exceeds the bound by " + pct(f_printed / bound - 1) +
         ", so demscale defaults to the published form" +
-        (scene.particle_curve == bridge::CurveSource::exact
-             ? ". This scene's DEM bridges follow neither: they take the exact Young-Laplace bridge (bridge_variant = table), "
-               "and the table and curves above show the fit it replaces."
+        (scene.particle_curve != bridge::CurveSource::fit
+             ? ". This scene's DEM bridges follow neither: they take " + std::string(dem::particle_curve_source(scene).label) +
+                   " (bridge_variant = " + slump::bridge_variant_name(scene) + "), and the table and curves above show the fit it replaces."
              : " (" + slump::bridge_variant_name(scene) + " in this scene).")});
     // The fits' findings at the scene's V̂ and θ, and with wet walls the wall fit's excess over
     // the exact sphere–plane bridge: what every command that runs the scene prints.

@@ -13,13 +13,14 @@ std::vector<std::string> bridge_warnings(const SlumpScene& s) {
     if (!s.wet) return out;
     const double vhat = bridge_vhat(s);
     const ContactAngle theta = s.liquid.contact_angle;
-    // An exact curve has no fitted range; solving it here refuses a scene where it has no bridge.
-    if (s.particle_curve == bridge::CurveSource::exact) particle_bridge_curve(s);
+    // A tabulated curve (exact, Willett's) has no Mikami range; building it here refuses a scene
+    // where it has no bridge.
+    if (s.particle_curve != bridge::CurveSource::fit) particle_bridge_curve(s);
     else
         for (const auto& w : bridge::check_validity(vhat, theta, bridge::mikami_coefficients(vhat, theta, s.bridge)))
             out.push_back("particle-particle bridges (" + bridge_variant_name(s) + "): " + w.message);
     if (!s.wet_walls) return out;
-    if (s.wall_curve == bridge::CurveSource::exact) {
+    if (s.wall_curve != bridge::CurveSource::fit) {
         wall_bridge_curve(s);
         return out;
     }

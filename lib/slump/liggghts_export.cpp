@@ -10,6 +10,7 @@
 #include "bridge/mikami.hpp"
 #include "io/atomic_file.hpp"
 #include "slump/fill.hpp"
+#include "dem/bridge_law.hpp"
 #include "slump/scene_bridges.hpp"
 
 namespace demscale::slump {
@@ -136,8 +137,10 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
         "liquid: carried per particle and shared evenly again at rupture (equal spheres: nothing moves); demscale gives every bridge V",
     };
     if (sc.wet_walls) w.notes.push_back("walls DRY here: easo/capillary/viscous refuses walls; the demscale scene has wet walls");
-    if (sc.particle_curve != bridge::CurveSource::fit || sc.bridge.variant != bridge::MikamiVariant::mikami1998)
-        w.notes.push_back("the scene's bridges follow " + bridge_variant_name(sc) + "; LIGGGHTS has only the fit above");
+    // A curve source with no LIGGGHTS words of its own has no equivalent there: said, not hidden.
+    if (const auto& source = dem::particle_curve_source(sc); source.liggghts.empty())
+        w.notes.push_back("the scene's bridges follow " + std::string(source.label) + " (" + std::string(source.value) +
+                          "): LIGGGHTS has no equivalent, the deck uses the fit above");
     return w;
 }
 

@@ -3,8 +3,9 @@
 // (hertz, tangential history, and the scene's rolling law: epsd3 with Ai's 2.25 and no damping for
 // demscale's epsd, epsd2, or cdt), parameters, time step, lift and spread, ending
 // in a dump of the final pile. A rough floor's grains follow the pile in the data file, in a group
-// that is never integrated (held in place). LIGGGHTS-PUBLIC has no Mikami bridge: a wet scene is exported dry,
-// and the deck says so.
+// that is never integrated (held in place). A wet scene's bridges become cohesion
+// easo/capillary/viscous (Soulié et al.'s form of Mikami's regression); the deck's header says
+// what differs, a bridge curve LIGGGHTS has no equivalent for included.
 #pragma once
 
 #include <filesystem>

@@ -1,8 +1,6 @@
-// The curves a wet scene's bridges follow (docs/models/liquid-bridge.md): particle–particle as
-// liquid.bridge_variant says (a Mikami fit, or "table": the exact bridge at the scene's V̂ and θ),
-// particle–wall as liquid.wall_bridge says ("table", the default: the exact sphere–plane bridge with
-// θ on both surfaces; "mikami1998": Mikami's sphere–wall fit). An exact column is solved once per
-// process for each (V̂, θ, geometry) and shared between runs and threads.
+// The curves a wet scene's bridges follow and its bridge law, as dem/bridge_law.hpp builds them
+// from the scene's choices (liquid.bridge_variant, liquid.wall_bridge: bridge/curve_sources.hpp)
+// with the scene's liquid per bridge V̂ (Eq. 5); errors name the scene file.
 #pragma once
 
 #include <string>
@@ -13,8 +11,8 @@
 
 namespace demscale::slump {
 
-// Throw InputError naming liquid.bridge_variant or liquid.wall_bridge where the exact solver finds
-// no concave bridge at the scene's V̂ and θ.
+// Throw InputError naming liquid.bridge_variant or liquid.wall_bridge where the chosen source has
+// no bridge at the scene's V̂ and θ.
 bridge::BridgeCurve particle_bridge_curve(const SlumpScene& s);
 bridge::BridgeCurve wall_bridge_curve(const SlumpScene& s);
 
@@ -22,7 +20,7 @@ bridge::BridgeCurve wall_bridge_curve(const SlumpScene& s);
 // (one V̂ for every pair), its viscous part; largest_radius (m) sets the range.
 dem::CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius);
 
-std::string bridge_variant_name(const SlumpScene& s);  // mikami1998, yun-park-2017 or table
-std::string wall_bridge_name(const SlumpScene& s);     // table or mikami1998
+std::string bridge_variant_name(const SlumpScene& s);  // the value of liquid.bridge_variant: mikami1998, table, ...
+std::string wall_bridge_name(const SlumpScene& s);     // the value of liquid.wall_bridge
 
 }  // namespace demscale::slump

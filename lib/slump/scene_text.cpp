@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "bridge/curve_sources.hpp"
 #include "core/input_error.hpp"
 #include "core/version.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 // One line of the text: its name, the scene's value, whether this scene writes it, and how a
 // scene read back takes the value.
 struct Line {
-    std::string_view name;
+    std::string name;
     double value;
     bool written;
     std::function<void(SlumpScene&, double)> set;
@@ -52,18 +53,23 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
          [](SlumpScene& t, double v) { t.bridge.variant = as<bridge::MikamiVariant>(v); }},
         {"rupture", static_cast<double>(s.bridge.rupture), s.wet,
          [](SlumpScene& t, double v) { t.bridge.rupture = as<bridge::RuptureLaw>(v); }},
-        // The exact curves came after format 5: a line only where one acts, so that the keys of
-        // fitted scenes stayed as they were. Absent means the fit.
-        {"particle_curve_exact", 1, s.wet && s.particle_curve == bridge::CurveSource::exact,
-         [](SlumpScene& t, double) { t.particle_curve = bridge::CurveSource::exact; }},
-        {"lubrication", static_cast<double>(s.lubrication), s.wet && s.viscosity_pa_s > 0,
-         [](SlumpScene& t, double v) { t.lubrication = as<dem::Lubrication>(v); }},
-        {"wall_curve_exact", 1, s.wet && s.wet_walls && s.wall_curve == bridge::CurveSource::exact,
-         [](SlumpScene& t, double) { t.wall_curve = bridge::CurveSource::exact; }},
     };
+    // Each bridge curve source other than the fit has its line (bridge/curve_sources.hpp; the exact
+    // curves came after format 5), written only where it acts, so that the keys of fitted scenes
+    // stayed as they were. Absent means the fit.
+    auto curve_lines = [&](bridge::BridgeGeometry geometry, bool acts, bridge::CurveSource SlumpScene::*field, const char* prefix) {
+        for (const auto& source : bridge::curve_sources())
+            if (!source.cache_name.empty() && source.has(geometry))
+                l.push_back({prefix + std::string(source.cache_name), 1, acts && s.*field == source.source,
+                             [field, chosen = source.source](SlumpScene& t, double) { t.*field = chosen; }});
+    };
+    curve_lines(bridge::BridgeGeometry::sphere_sphere, s.wet, &SlumpScene::particle_curve, "particle_curve_");
+    l.push_back({"lubrication", static_cast<double>(s.lubrication), s.wet && s.viscosity_pa_s > 0,
+                 [](SlumpScene& t, double v) { t.lubrication = as<dem::Lubrication>(v); }});
+    curve_lines(bridge::BridgeGeometry::sphere_wall, s.wet && s.wet_walls, &SlumpScene::wall_curve, "wall_curve_");
     for (const auto& part : parts)
         for (const auto& p : part.parameters)
-            l.push_back({p.key, p.get(s), part.active(s), [set = p.set](SlumpScene& t, double v) { set(t, v); }});
+            l.push_back({std::string(p.key), p.get(s), part.active(s), [set = p.set](SlumpScene& t, double v) { set(t, v); }});
     const std::vector<Line> protocol = {
         {"dt", s.dt_s, true, into(&SlumpScene::dt_s)},
         {"g", s.gravity, true, into(&SlumpScene::gravity)},
@@ -99,7 +105,7 @@ SlumpScene scene_from_text(const std::string& text, const std::string& source, s
     SlumpScene s;
     s.name = source, s.source = source;
     s.particle_curve = s.wall_curve = bridge::CurveSource::fit;  // an exact curve has its own line
-    std::map<std::string_view, std::function<void(SlumpScene&, double)>> setters;
+    std::map<std::string, std::function<void(SlumpScene&, double)>> setters;
     for (auto& line : lines(s, parts)) setters.emplace(line.name, std::move(line.set));
     std::istringstream in(text);
     std::string line, body;

@@ -3,8 +3,9 @@
 #include <cmath>
 #include <span>
 
+#include "bridge/curve_sources.hpp"
 #include "bridge/liquid_volume.hpp"
-#include "bridge/validity.hpp"
+#include "dem/bridge_law.hpp"
 #include "core/input_error.hpp"
 #include "io/toml_reader.hpp"
 #include "dem/law_parts.hpp"
@@ -97,16 +98,18 @@ void read_law_choices(const io::TomlReader& r, SlumpScene& s) {
     }
     s.wet = r.boolean("liquid.wet").value_or(true);
     s.wet_walls = r.boolean("liquid.wet_walls").value_or(false);
-    if (auto v = r.text("liquid.bridge_variant")) {
-        if (*v == "table") s.particle_curve = bridge::CurveSource::exact;
-        else if (*v == "mikami1998" || *v == "yun-park-2017") s.bridge.variant = bridge::parse_mikami_variant(*v, "liquid.bridge_variant");
-        else throw InputError(r.where("liquid.bridge_variant", "liquid.bridge_variant"), "\"" + *v + "\"", "one of mikami1998, yun-park-2017, table");
+    // The bridge curves: any source of bridge/curve_sources.hpp that has the geometry.
+    auto curve = [&](const std::string& key, bridge::BridgeGeometry geometry) -> const bridge::CurveSourceEntry* {
+        const auto v = r.text(key);
+        if (!v) return nullptr;
+        if (const auto* e = bridge::find_curve_source(*v, geometry)) return e;
+        throw InputError(r.where(key, key), "\"" + *v + "\"", "one of " + bridge::curve_source_values(geometry));
+    };
+    if (const auto* e = curve("liquid.bridge_variant", bridge::BridgeGeometry::sphere_sphere)) {
+        s.particle_curve = e->source;
+        if (e->source == bridge::CurveSource::fit) s.bridge.variant = e->fit_variant;
     }
-    if (auto v = r.text("liquid.wall_bridge")) {
-        if (*v == "table") s.wall_curve = bridge::CurveSource::exact;
-        else if (*v == "mikami1998") s.wall_curve = bridge::CurveSource::fit;
-        else throw InputError(r.where("liquid.wall_bridge", "liquid.wall_bridge"), "\"" + *v + "\"", "one of table, mikami1998");
-    }
+    if (const auto* e = curve("liquid.wall_bridge", bridge::BridgeGeometry::sphere_wall)) s.wall_curve = e->source;
     if (auto v = r.text("liquid.lubrication")) {
         if (*v == "finite_volume") s.lubrication = dem::Lubrication::finite_volume;
         else if (*v == "unbounded") s.lubrication = dem::Lubrication::unbounded;
@@ -189,16 +192,19 @@ void check_consistency(const io::TomlReader& r, const SlumpScene& s) {
     if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))  // the fine reference; coarse runs may go further
         throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
-    if (s.wet) {  // the liquid per bridge (Eq. 5, independent of R) must lie where Mikami's fit holds
-        const bridge::ValidityRange fitted;
-        const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;
-        if (!(vhat >= fitted.vhat_min && vhat <= fitted.vhat_max))
-            throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
-                             "[" + format_short(fitted.vhat_min / vhat_per_moisture, 3) + ", " +
-                                 format_short(fitted.vhat_max / vhat_per_moisture, 3) + "] here: the liquid per bridge V/R^3 = " +
-                                 format_short(vhat, 3) + " (Eq. 5) must lie in the Mikami fit's range [" +
-                                 format_short(fitted.vhat_min, 3) + ", " + format_short(fitted.vhat_max, 3) + "]");
-    }
+    if (s.wet)  // the liquid per bridge (Eq. 5, independent of R) must lie where each bridge curve holds
+        for (const auto geometry : {bridge::BridgeGeometry::sphere_sphere, bridge::BridgeGeometry::sphere_wall}) {
+            if (geometry == bridge::BridgeGeometry::sphere_wall && !s.wet_walls) continue;
+            const auto& source = geometry == bridge::BridgeGeometry::sphere_sphere ? dem::particle_curve_source(s) : dem::wall_curve_source(s);
+            const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;
+            if (!(vhat >= source.vhat_min && vhat <= source.vhat_max))
+                throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
+                                 "[" + format_short(source.vhat_min / vhat_per_moisture, 3) + ", " +
+                                     format_short(source.vhat_max / vhat_per_moisture, 3) + "] here: the liquid per bridge V/R^3 = " +
+                                     format_short(vhat, 3) + " (Eq. 5) must lie in " + std::string(source.vhat_range_name) + " [" +
+                                     format_short(source.vhat_min, 3) + ", " + format_short(source.vhat_max, 3) + "] (" +
+                                     std::string(source.value) + ")");
+        }
     if (s.rough_floor && !(s.rough_floor_diameter_m >= s.bottom_diameter_m))
         throw InputError(r.where("floor.rough_diameter_mm", "floor.rough_diameter_mm"), format_number(s.rough_floor_diameter_m / mm),
                          ">= cone.bottom_diameter_mm = " + format_number(s.bottom_diameter_m / mm) + " (the rough disc carries the fill)");

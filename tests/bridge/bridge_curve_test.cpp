@@ -1,14 +1,17 @@
 // The DEM's bridge curves against independent routes: the tabulated exact curve against the exact
 // solver between its nodes, and its work to rupture against an adaptive quadrature of the solver's
-// forces.
+// forces; the curve sources' declarations.
 #include <catch2/catch.hpp>
 #include <gsl/gsl_integration.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <set>
 
 #include "bridge/bridge_curve.hpp"
+#include "bridge/curve_sources.hpp"
 #include "bridge/young_laplace.hpp"
 
 using namespace demscale;
@@ -96,4 +99,36 @@ TEST_CASE("Exact sphere-plane columns solve at every node for theta 0-40 deg and
             INFO("V^ = " << vhat << ", theta = " << theta);
             CHECK_NOTHROW(BridgeCurve::exact(vhat, deg(theta), BridgeGeometry::sphere_wall));
         }
+}
+
+TEST_CASE("Every bridge curve source declares what a scene's choice needs, and builds a bridge in its range", "[bridge][curve]") {
+    std::set<std::pair<std::string_view, int>> values;
+    for (const auto& source : curve_sources()) {
+        INFO(source.value);
+        CHECK_FALSE(source.value.empty());
+        CHECK_FALSE(source.label.empty());
+        CHECK_FALSE(source.vhat_range_name.empty());
+        REQUIRE(source.build != nullptr);
+        CHECK((source.sphere_sphere || source.sphere_wall));
+        CHECK(0 < source.vhat_min);
+        CHECK(source.vhat_min < source.vhat_max);
+        // Only a fit goes without its cache line (its printed form has one of its own).
+        CHECK(source.cache_name.empty() == (source.source == CurveSource::fit));
+        for (auto g : {BridgeGeometry::sphere_sphere, BridgeGeometry::sphere_wall}) {
+            if (!source.has(g)) continue;
+            CHECK(values.insert({source.value, static_cast<int>(g)}).second);  // one value, one source
+            CHECK(find_curve_source(source.value, g) == &source);
+            CHECK(curve_source_values(g).find(source.value) != std::string::npos);
+            // The entry a scene's settings lead back to is this one.
+            CHECK(&curve_source(source.source, source.fit_variant, g) == &source);
+            const double vhat = std::clamp(0.01, source.vhat_min, source.vhat_max);
+            const auto curve = source.build(vhat, deg(20), g, {source.fit_variant, RuptureLaw::mikami1998});
+            CHECK(std::isfinite(curve.fhat(0.0)));
+            CHECK(curve.fhat(0.0) > 0);
+            CHECK(curve.hhat_rupture() > 0);
+            CHECK(curve.fhat(0.5 * curve.hhat_rupture()) < curve.fhat(0.0));  // it weakens as the gap opens
+        }
+    }
+    CHECK(find_curve_source("table", BridgeGeometry::sphere_wall)->source == CurveSource::exact);
+    CHECK(find_curve_source("exact", BridgeGeometry::sphere_sphere) == nullptr);
 }

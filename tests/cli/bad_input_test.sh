@@ -124,7 +124,7 @@ case $class in
     scene '[liquid]' 'bridge_variant = "exact"'
     scene_commands 'scene.toml:2: liquid.bridge_variant = "exact": accepted one of mikami1998, yun-park-2017, table' "$work/scene.toml" no-pile
     scene '[liquid]' 'wall_bridge = "fit"'
-    scene_commands 'scene.toml:2: liquid.wall_bridge = "fit": accepted one of table, mikami1998' "$work/scene.toml" no-pile
+    scene_commands 'scene.toml:2: liquid.wall_bridge = "fit": accepted one of mikami1998, table' "$work/scene.toml" no-pile
     # The exact bridges exist only where the solver finds a concave one (the default wall law too).
     scene '[liquid]' 'bridge_variant = "table"' 'contact_angle_deg = 85'
     scene_commands 'scene.toml: liquid.bridge_variant = "table" at V\^ = 0.05556, theta = 85 deg: accepted .*concave bridge, or bridge_variant = "mikami1998"' "$work/scene.toml" no-pile

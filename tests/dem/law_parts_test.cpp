@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <utility>
 
+#include "bridge/curve_sources.hpp"
 #include "core/input_error.hpp"
 #include "dem/law_parts.hpp"
 #include "report/scene_table.hpp"
@@ -149,4 +151,21 @@ TEST_CASE("docs/file-formats.md lists every law parameter with the default its t
             REQUIRE(end != quoted.c_str());
             CHECK(documented == Approx(p.default_value).epsilon(1e-12).margin(1e-300));
         }
+}
+
+TEST_CASE("docs/file-formats.md lists every bridge curve source a scene can write, for each geometry", "[dem][bridge][docs]") {
+    std::ifstream in(std::string(DEMSCALE_SOURCE_DIR) + "/docs/file-formats.md");
+    REQUIRE(in);
+    std::string line, page;
+    while (std::getline(in, line)) page += line + "\n";
+    for (const auto& [key, geometry] : {std::pair{"liquid.bridge_variant", bridge::BridgeGeometry::sphere_sphere},
+                                        std::pair{"liquid.wall_bridge", bridge::BridgeGeometry::sphere_wall}}) {
+        const auto row = page.find("| `" + std::string(key) + "` |");
+        REQUIRE(row != std::string::npos);
+        const auto cells = page.substr(row, page.find('\n', row) - row);
+        for (const auto& source : bridge::curve_sources()) {
+            INFO(key << ": " << source.value);
+            CHECK((cells.find("`" + std::string(source.value) + "`") != std::string::npos) == source.has(geometry));
+        }
+    }
 }

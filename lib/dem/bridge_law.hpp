@@ -1,0 +1,30 @@
+// The liquid-bridge law of wet contact settings, built here and nowhere else: its curves from the
+// sources the settings choose (bridge/curve_sources.hpp: liquid.bridge_variant between spheres,
+// liquid.wall_bridge to wet walls), its viscous part, one V̂ for every pair. A tabulated curve
+// (the exact bridge) is built once per process for each source, V̂, θ and geometry
+// and shared between runs and threads (0.3-0.5 s a column for the exact bridge).
+#pragma once
+
+#include <string>
+
+#include "bridge/curve_sources.hpp"
+#include "dem/contact_settings.hpp"
+#include "dem/laws/cohesion.hpp"
+
+namespace demscale::dem {
+
+// The sources the settings choose, between spheres and to the walls.
+const bridge::CurveSourceEntry& particle_curve_source(const ContactSettings& s);
+const bridge::CurveSourceEntry& wall_curve_source(const ContactSettings& s);
+
+// A source's curve at V̂ = V/R³ and the settings' θ (and fit options). Throws InputError naming
+// `field` (with `where` before it, a file, when given) where the source has no bridge there.
+bridge::BridgeCurve bridge_curve(const bridge::CurveSourceEntry& source, const ContactSettings& s, double vhat, bridge::BridgeGeometry geometry,
+                                 const std::string& field, const std::string& where = {});
+
+// The law: R = largest_radius_m for every pair (it also sets the range), the roughness gap of
+// particles of radius_m, V̂ = vhat (m, m, 1).
+CohesionLiquidBridge build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat,
+                                         const std::string& where = {});
+
+}  // namespace demscale::dem
