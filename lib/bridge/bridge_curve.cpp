@@ -6,8 +6,10 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "bridge/young_laplace.hpp"
+#include "core/input_error.hpp"
 
 namespace demscale::bridge {
 
@@ -36,11 +38,29 @@ BridgeCurve::BridgeCurve(const MikamiCoefficients& k) : hhat_rupture_(k.hhat_rup
 BridgeCurve BridgeCurve::exact(double vhat, ContactAngle theta, BridgeGeometry geometry, int gap_points) {
     const YoungLaplaceBridge family = geometry == BridgeGeometry::sphere_sphere ? YoungLaplaceBridge(vhat, theta)
                                                                                 : YoungLaplaceBridge::sphere_plane(vhat, theta, theta);
+    return from_column(BridgeTable::solve_column(family, gap_points));  // the exact solver's F̂ is F/(2πRγ)
+}
+
+BridgeCurve BridgeCurve::tabulated(const std::function<double(double)>& fhat_of_hhat, double hhat_rupture, int gap_points) {
+    if (!(std::isfinite(hhat_rupture) && hhat_rupture > 0)) throw std::runtime_error("rupture gap h^_c = " + format_number(hhat_rupture));
+    BridgeTable::Pair p;
+    p.hhat_rupture = hhat_rupture;
+    p.even_at_rupture = true;  // a closed form has a finite slope at its rupture gap
+    for (int ix = 0; ix < gap_points; ++ix) {
+        const double x = BridgeTable::gap_fraction(double(ix) / (gap_points - 1)), f = fhat_of_hhat(x * hhat_rupture);
+        if (!(std::isfinite(f) && f > 0)) throw std::runtime_error("F^ = " + format_number(f) + " at h^/h^_c = " + format_number(x));
+        p.column.push_back(std::log(f));  // interpolated in ln F̂, as the exact column
+    }
+    return from_column(std::move(p));
+}
+
+BridgeCurve BridgeCurve::from_column(BridgeTable::Pair column) {
     BridgeCurve c;
     c.tabulated_ = true;
-    c.force_scale_ = 2 * std::numbers::pi;  // the exact solver's F̂ is F/(2πRγ)
-    c.column_ = BridgeTable::solve_column(family, gap_points);
+    c.force_scale_ = 2 * std::numbers::pi;
+    c.column_ = std::move(column);
     c.hhat_rupture_ = c.column_.hhat_rupture;
+    const int gap_points = static_cast<int>(c.column_.column.size());
     c.work_from_node_.assign(gap_points, 0.0);
     for (int i = gap_points - 2; i >= 0; --i) c.work_from_node_[i] = c.work_from_node_[i + 1] + c.work_in_segment(i, double(i) / (gap_points - 1));
     return c;

@@ -1,12 +1,14 @@
 // One pair type's static liquid bridge along the gap, as the DEM evaluates it:
 // F = force_scale·R·γ·F̂(ĥ) up to the rupture gap ĥ_c, 0 beyond (ĥ = gap/R, < 0 an overlap, which
-// counts as contact). Two sources (docs/models/liquid-bridge.md):
+// counts as contact). Two forms (docs/models/liquid-bridge.md):
 //  * a Mikami et al. (1998) regression (Yun & Park 2017 Eqs. 1–8, or the sphere–wall fit): one exp;
-//  * the exact Young–Laplace bridge (sphere–sphere or sphere–plane) solved at one (V̂, θ) and
-//    tabulated along the gap on BridgeTable's nodes and cubic: an acos and an exp per call.
+//  * a column tabulated along the gap on BridgeTable's nodes and cubic (an acos and an exp per
+//    call): the exact Young–Laplace bridge (sphere–sphere or sphere–plane) solved at one (V̂, θ),
+//    or a closed form such as Willett et al.'s (2000) fit.
 // Every DEM pair shares one V̂, so one column is exact in (V̂, θ) and only the gap is interpolated.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,8 +17,9 @@
 
 namespace demscale::bridge {
 
-// Where a scene's bridges take their curve from: the scene's Mikami fit, or the exact bridge.
-enum class CurveSource { fit, exact };
+// Where a scene's bridges take their curve from: the scene's Mikami fit, the exact bridge, or
+// Willett et al.'s (2000) full fit; what each source declares: bridge/curve_sources.hpp.
+enum class CurveSource { fit, exact, willett };
 
 class BridgeCurve {
 public:
@@ -27,6 +30,9 @@ public:
     // std::runtime_error where the exact solver finds no concave bridge (the message says why).
     static BridgeCurve exact(double vhat, ContactAngle theta, BridgeGeometry geometry, int gap_points = default_gap_points);
     static constexpr int default_gap_points = 65;
+    // A closed form F̂ = F/(2πRγ) of ĥ up to its rupture gap, tabulated on the same nodes (its slope
+    // at rupture finite: even_at_rupture). Throws std::runtime_error where F̂ is not finite and > 0.
+    static BridgeCurve tabulated(const std::function<double(double)>& fhat_of_hhat, double hhat_rupture, int gap_points = default_gap_points);
 
     bool tabulated() const { return tabulated_; }
     double hhat_rupture() const { return hhat_rupture_; }
@@ -46,6 +52,7 @@ private:
     MikamiCoefficients fit_;
     BridgeTable::Pair column_;
     std::vector<double> work_from_node_;  // work_to_rupture at each gap node (tabulated only)
+    static BridgeCurve from_column(BridgeTable::Pair column);  // F/(2πRγ) on the gap nodes
     double work_in_segment(int node, double t_from) const;
 };
 

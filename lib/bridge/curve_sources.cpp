@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "bridge/closed_forms.hpp"
 #include "bridge/mikami.hpp"
 #include "bridge/validity.hpp"
 
@@ -31,6 +32,14 @@ const CurveSourceEntry entries[] = {
      "the Mikami fit's range (where the exact bridge is checked against it)",
      [](double vhat, ContactAngle theta, BridgeGeometry g, const MikamiOptions&) { return BridgeCurve::exact(vhat, theta, g); }, "",
      "exact"},
+    // Willett et al. (2000), Langmuir 16:9396, the full fit (appendix) with their rupture (Eq. 15):
+    // evaluated for V̂ in [1e-6, 1], where its polynomials stay finite (docs/bridge-models.md).
+    {"willett", CurveSource::willett, MikamiVariant::mikami1998,
+     "Willett et al. (2000) full fit, rupture Eq. 15, tabulated", true, false, 1e-6, 1.0, "the range where Willett et al.'s fit stays finite",
+     [](double vhat, ContactAngle theta, BridgeGeometry, const MikamiOptions&) {
+         return BridgeCurve::tabulated([&](double hhat) { return willett_full_fhat(vhat, theta, hhat); }, willett_rupture_hhat(vhat, theta));
+     },
+     "", "willett"},
 };
 
 }  // namespace

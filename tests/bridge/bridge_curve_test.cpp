@@ -1,6 +1,6 @@
 // The DEM's bridge curves against independent routes: the tabulated exact curve against the exact
 // solver between its nodes, and its work to rupture against an adaptive quadrature of the solver's
-// forces; the curve sources' declarations.
+// forces; Willett's tabulated fit against the closed form; the curve sources' declarations.
 #include <catch2/catch.hpp>
 #include <gsl/gsl_integration.h>
 
@@ -11,6 +11,7 @@
 #include <set>
 
 #include "bridge/bridge_curve.hpp"
+#include "bridge/closed_forms.hpp"
 #include "bridge/curve_sources.hpp"
 #include "bridge/young_laplace.hpp"
 
@@ -101,6 +102,31 @@ TEST_CASE("Exact sphere-plane columns solve at every node for theta 0-40 deg and
         }
 }
 
+TEST_CASE("Willett's fit tabulated follows the closed form between its nodes, ruptures at Eq. 15", "[bridge][curve][willett]") {
+    // The second route is the closed form itself, evaluated where the table interpolates.
+    for (double vhat : {1e-4, 0.05544})
+        for (double theta : {0.0, 30.0}) {
+            INFO("V^ = " << vhat << ", theta = " << theta);
+            const auto& source = *find_curve_source("willett", BridgeGeometry::sphere_sphere);
+            const auto curve = source.build(vhat, deg(theta), BridgeGeometry::sphere_sphere, {});
+            CHECK(curve.tabulated());
+            CHECK(curve.force_scale() == Approx(2 * M_PI).epsilon(1e-15));  // Willett's F* = F/(2πRγ)
+            const double hc = willett_rupture_hhat(vhat, deg(theta));
+            CHECK(curve.hhat_rupture() == hc);
+            // Eq. 15 by hand: (1 + θ/2)(V̂^(1/3) + 0.1 V̂^(2/3)).
+            CHECK(hc == Approx((1 + deg(theta).radians() / 2) * (std::cbrt(vhat) + 0.1 * std::cbrt(vhat * vhat))).epsilon(1e-12));
+            double worst = 0;
+            const int n = BridgeCurve::default_gap_points;
+            for (int i = 0; i + 1 < n; i += 2) {
+                const double x = BridgeTable::gap_fraction((i + 0.5) / (n - 1));
+                worst = std::max(worst, std::abs(curve.fhat(x * hc) / willett_full_fhat(vhat, deg(theta), x * hc) - 1));
+            }
+            CHECK(worst < 1e-4);
+            CHECK(curve.fhat(0.0) == Approx(willett_full_fhat(vhat, deg(theta), 0.0)).epsilon(1e-12));
+            CHECK(curve.fhat(hc * (1 + 1e-9)) == 0.0);
+        }
+}
+
 TEST_CASE("Every bridge curve source declares what a scene's choice needs, and builds a bridge in its range", "[bridge][curve]") {
     std::set<std::pair<std::string_view, int>> values;
     for (const auto& source : curve_sources()) {
@@ -129,6 +155,6 @@ TEST_CASE("Every bridge curve source declares what a scene's choice needs, and b
             CHECK(curve.fhat(0.5 * curve.hhat_rupture()) < curve.fhat(0.0));  // it weakens as the gap opens
         }
     }
-    CHECK(find_curve_source("table", BridgeGeometry::sphere_wall)->source == CurveSource::exact);
+    CHECK(find_curve_source("willett", BridgeGeometry::sphere_wall) == nullptr);  // no sphere-plane form
     CHECK(find_curve_source("exact", BridgeGeometry::sphere_sphere) == nullptr);
 }

@@ -122,7 +122,7 @@ case $class in
     scene '[liquid]' 'contact_angle_deg = 90'
     scene_commands 'scene.toml:2: liquid.contact_angle_deg = 90: accepted \[0, 90\) deg' "$work/scene.toml"
     scene '[liquid]' 'bridge_variant = "exact"'
-    scene_commands 'scene.toml:2: liquid.bridge_variant = "exact": accepted one of mikami1998, yun-park-2017, table' "$work/scene.toml" no-pile
+    scene_commands 'scene.toml:2: liquid.bridge_variant = "exact": accepted one of mikami1998, yun-park-2017, table, willett' "$work/scene.toml" no-pile
     scene '[liquid]' 'wall_bridge = "fit"'
     scene_commands 'scene.toml:2: liquid.wall_bridge = "fit": accepted one of mikami1998, table' "$work/scene.toml" no-pile
     # The exact bridges exist only where the solver finds a concave one (the default wall law too).

@@ -205,7 +205,11 @@ case $case_name in
     sed -i 's/^wet_walls = true/wet_walls = true\nwall_bridge = "mikami1998"/' "$work/exact.toml"
     "$demscale" slump --scene "$work/exact.toml" --format json --no-png --out "$work/y" >"$work/fit.json" 2>"$work/fit.err" || fail "fit walls failed"
     grep -q '"wall_bridge_law": "mikami1998"' "$work/fit.json" || fail "fit wall law not named"
-    grep -q "warning: particle-wall bridges: Mikami's sphere-wall fit pulls" "$work/fit.err" || fail "no wall-fit warning" ;;
+    grep -q "warning: particle-wall bridges: Mikami's sphere-wall fit pulls" "$work/fit.err" || fail "no wall-fit warning"
+    # Willett et al.'s fit as the bridge between spheres: named, run, and said in the LIGGGHTS deck to have no equivalent there.
+    { cat "$src/data/scenes/small_wet.toml"; printf '[liquid]\nbridge_variant = "willett"\n'; } >"$work/willett.toml"
+    expect 0 '"bridge_law": "willett"' -- "$demscale" slump --scene "$work/willett.toml" --format json --no-png --out "$work/w"
+    grep -q '"final_height_mm"' "$work/out" || fail "no result with Willett's bridges" ;;
   backend_bad_input_exit_2)
     # Refused before anything runs or is submitted, with or without Slurm on the machine.
     small=(check-exponent --exponent 1 --scene "$src/data/scenes/small_wet.toml" --sf 1.4 --seeds 2 --out "$work/bad")

@@ -78,6 +78,11 @@ TEST_CASE("Scene text: every shipped scene and its variants read back as the sam
     fitted_walls.wall_curve = bridge::CurveSource::fit, fitted_walls.bridge.rupture = bridge::RuptureLaw::lian1993;
     fitted_walls.rolling_model = dem::RollingModel::epsd2, fitted_walls.radius_m = 1.0 / 3.0 * 1e-3;
     scenes.push_back(fitted_walls);
+    auto willett = shipped("small_wet.toml");  // a curve source after format 5: its own line
+    willett.particle_curve = bridge::CurveSource::willett;
+    scenes.push_back(willett);
+    CHECK(scene_key(willett) != scene_key(shipped("small_wet.toml")));
+    CHECK(scene_key(willett) != scene_key(exact));
     // A fitted scene writes no curve line: its key stays what it was before the sources were listed.
     CHECK(scene_text(shipped("kantro_wet.toml")).find("curve_") == std::string::npos);
     auto unbounded = shipped("kantro_wet.toml");  // viscous: the lubrication's form is part of the run

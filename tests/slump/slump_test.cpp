@@ -6,12 +6,16 @@
 #include <fstream>
 #include <vector>
 
+#include <unistd.h>
+
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "bridge/closed_forms.hpp"
 #include "bridge/young_laplace.hpp"
 #include "slump/bridge_warnings.hpp"
 #include "slump/coarse_grain.hpp"
 #include "slump/fill.hpp"
+#include "slump/liggghts_export.hpp"
 #include "slump/scene_bridges.hpp"
 #include "slump/measurements.hpp"
 #include "io/table_config.hpp"
@@ -337,4 +341,37 @@ TEST_CASE("A scene's wet walls pull at contact and across a gap: the exact spher
             CHECK(pulled > 0);
         }
     }
+}
+
+TEST_CASE("A scene that chooses Willett's bridge pulls 2 pi R gamma F* of their fit, to their rupture gap", "[slump][bridge][curve][willett]") {
+    // By hand from the closed form (Willett et al. 2000: F* = F/(2πRγ), rupture Eq. 15), through
+    // the scene's choice, the law's builder and the engine's pull.
+    slump::SlumpScene s;
+    s.particle_curve = bridge::CurveSource::willett;
+    const double r = s.radius_m, gamma = s.liquid.surface_tension_n_per_m, vhat = slump::bridge_vhat(s);
+    const auto theta = s.liquid.contact_angle;
+    const auto law = slump::scene_bridge(s, r);
+    CHECK(slump::bridge_variant_name(s) == "willett");
+    dem::CohesionLiquidBridge::State state;
+    dem::Dissipation lost;
+    CHECK(law.pull(1e-6 * r, r, 0.0, 1e-6, false, state, lost) == Approx(2 * M_PI * r * gamma * bridge::willett_full_fhat(vhat, theta, 0.0)).epsilon(1e-9));
+    for (double x : {0.13, 0.5, 0.91}) {
+        const double hhat = x * bridge::willett_rupture_hhat(vhat, theta);
+        INFO("gap " << hhat << " R");
+        CHECK(law.pull(-hhat * r, r, 0.0, 1e-6, false, state, lost) == Approx(2 * M_PI * r * gamma * bridge::willett_full_fhat(vhat, theta, hhat)).epsilon(1e-4));
+    }
+    CHECK(law.range() == Approx(bridge::willett_rupture_hhat(vhat, theta) * r).epsilon(1e-12));
+    CHECK(law.pull(-1.01 * bridge::willett_rupture_hhat(vhat, theta) * r, r, 0.0, 1e-6, false, state, lost) == 0.0);
+    // LIGGGHTS has no such bridge: the exported deck says so in its header, beside the fit it uses.
+    dem::Particles settled;
+    settled.add({0, 0, r}, r, s.material.density);
+    settled.add({3 * r, 0, r}, r, s.material.density);
+    const auto dir = std::filesystem::temp_directory_path() / ("demscale-willett-" + std::to_string(::getpid()));
+    slump::export_liggghts(s, settled, dir);
+    std::ifstream deck(dir / "in.slump");
+    const std::string text((std::istreambuf_iterator<char>(deck)), std::istreambuf_iterator<char>());
+    std::filesystem::remove_all(dir);
+    CHECK(text.find("# the scene's bridges follow Willett et al. (2000) full fit, rupture Eq. 15, tabulated (willett): LIGGGHTS has no "
+                    "equivalent") != std::string::npos);
+    CHECK(text.find("cohesion easo/capillary/viscous") != std::string::npos);
 }
