@@ -1,7 +1,7 @@
 // The liquid-bridge law of wet contact settings, built here and nowhere else: its curves from the
 // sources the settings choose (bridge/curve_sources.hpp: liquid.bridge_variant between spheres,
 // liquid.wall_bridge to wet walls), its viscous part, one V̂ for every pair. A tabulated curve
-// (the exact bridge) is built once per process for each source, V̂, θ and geometry
+// (the exact bridge, Willett's fit) is built once per process for each source, V̂, θ and geometry
 // and shared between runs and threads (0.3-0.5 s a column for the exact bridge).
 #pragma once
 
