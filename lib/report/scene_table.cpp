@@ -24,13 +24,11 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
                               : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"
                                                                                        : "epsd (Ai's model C, with dashpot)");
     // Each curve source's own row (bridge/curve_sources.hpp); a fit also names its rupture law.
-    const auto& particle = dem::particle_curve_source(s);
+    auto named = [](const bridge::CurveSourceEntry& source) { return std::string(source.value) + ": " + std::string(source.label); };
     say("bridge model", !s.wet ? "none (dry)"
-                               : std::string(particle.value) + ": " + std::string(particle.label) +
+                               : named(dem::particle_curve_source(s)) +
                                      (s.particle_curve == bridge::CurveSource::fit ? ", rupture " + std::string(bridge::to_string(s.bridge.rupture)) : ""));
-    say("bridges to the floor and cone", !s.wet || !s.wet_walls ? "no"
-                                                                : "yes, " + std::string(dem::wall_curve_source(s).value) + ": " +
-                                                                      std::string(dem::wall_curve_source(s).label));
+    say("bridges to the floor and cone", !s.wet || !s.wet_walls ? "no" : "yes, " + named(dem::wall_curve_source(s)));
     if (s.wet && s.viscosity_pa_s > 0)
         say("normal lubrication", s.lubrication == dem::Lubrication::finite_volume
                                       ? "finite volume (Pitois et al. 2000): squeezed out to the meniscus"

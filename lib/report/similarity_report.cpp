@@ -10,6 +10,7 @@
 
 #include "bridge/bridge_model.hpp"
 #include "bridge/liquid_volume.hpp"
+#include "dem/bridge_law.hpp"
 #include "core/input_error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
@@ -25,7 +26,6 @@
 #include "report/slump_study_files.hpp"
 #include "report/slump_study_tables.hpp"
 #include "slump/bridge_warnings.hpp"
-#include "dem/bridge_law.hpp"
 #include "slump/scene_bridges.hpp"
 #include "slump/slump_files.hpp"
 #include "slump/study.hpp"

@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "bridge/mikami.hpp"
+#include "dem/bridge_law.hpp"
 #include "io/atomic_file.hpp"
 #include "slump/fill.hpp"
-#include "dem/bridge_law.hpp"
 #include "slump/scene_bridges.hpp"
 
 namespace demscale::slump {

@@ -192,19 +192,19 @@ void check_consistency(const io::TomlReader& r, const SlumpScene& s) {
     if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))  // the fine reference; coarse runs may go further
         throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
-    if (s.wet)  // the liquid per bridge (Eq. 5, independent of R) must lie where each bridge curve holds
-        for (const auto geometry : {bridge::BridgeGeometry::sphere_sphere, bridge::BridgeGeometry::sphere_wall}) {
-            if (geometry == bridge::BridgeGeometry::sphere_wall && !s.wet_walls) continue;
-            const auto& source = geometry == bridge::BridgeGeometry::sphere_sphere ? dem::particle_curve_source(s) : dem::wall_curve_source(s);
-            const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;
-            if (!(vhat >= source.vhat_min && vhat <= source.vhat_max))
-                throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
-                                 "[" + format_short(source.vhat_min / vhat_per_moisture, 3) + ", " +
-                                     format_short(source.vhat_max / vhat_per_moisture, 3) + "] here: the liquid per bridge V/R^3 = " +
-                                     format_short(vhat, 3) + " (Eq. 5) must lie in " + std::string(source.vhat_range_name) + " [" +
-                                     format_short(source.vhat_min, 3) + ", " + format_short(source.vhat_max, 3) + "] (" +
-                                     std::string(source.value) + ")");
-        }
+    // The liquid per bridge (Eq. 5, independent of R) must lie where each acting bridge curve holds.
+    auto check_vhat = [&](const bridge::CurveSourceEntry& source) {
+        const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;
+        if (!(vhat >= source.vhat_min && vhat <= source.vhat_max))
+            throw InputError(r.where("liquid.moisture_content", "liquid.moisture_content"), format_number(s.liquid.moisture_content),
+                             "[" + format_short(source.vhat_min / vhat_per_moisture, 3) + ", " +
+                                 format_short(source.vhat_max / vhat_per_moisture, 3) + "] here: the liquid per bridge V/R^3 = " +
+                                 format_short(vhat, 3) + " (Eq. 5) must lie in " + std::string(source.vhat_range_name) + " [" +
+                                 format_short(source.vhat_min, 3) + ", " + format_short(source.vhat_max, 3) + "] (" +
+                                 std::string(source.value) + ")");
+    };
+    if (s.wet) check_vhat(dem::particle_curve_source(s));
+    if (s.wet && s.wet_walls) check_vhat(dem::wall_curve_source(s));
     if (s.rough_floor && !(s.rough_floor_diameter_m >= s.bottom_diameter_m))
         throw InputError(r.where("floor.rough_diameter_mm", "floor.rough_diameter_mm"), format_number(s.rough_floor_diameter_m / mm),
                          ">= cone.bottom_diameter_mm = " + format_number(s.bottom_diameter_m / mm) + " (the rough disc carries the fill)");
