@@ -12,6 +12,7 @@
 #include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "dem/law_parts.hpp"
 #include "slump/liggghts_export.hpp"
 #include "io/particle_state.hpp"
 #include "io/vtk_writer.hpp"
@@ -121,6 +122,10 @@ int run_slump_command(const Options& o) {
     // The thread governor's choice over the lift and spread (0 and 0 on one thread).
     j["thread_windows"] = {{"all_threads", r.windows_all_threads}, {"one_thread", r.windows_one_thread}};
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
+    // The laws the scene chose, by their parts' choice values (dem/law_parts.hpp).
+    j["contact_laws"] = nlohmann::ordered_json::array();
+    for (const auto& part : dem::law_parts())
+        if (!part.choice.empty() && part.active(scene)) j["contact_laws"].push_back(std::string(part.choice));
     j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
     j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
     j["pour_time_s"] = r.pour_time;

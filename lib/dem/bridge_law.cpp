@@ -1,10 +1,12 @@
 #include "dem/bridge_law.hpp"
 
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 #include <tuple>
 
+#include "bridge/liquid_volume.hpp"
 #include "core/input_error.hpp"
 
 namespace demscale::dem {
@@ -42,6 +44,16 @@ CohesionLiquidBridge build_liquid_bridge(const ContactSettings& s, double radius
     auto wall = s.wet_walls ? std::optional(bridge_curve(wall_curve_source(s), s, vhat, bridge::BridgeGeometry::sphere_wall, "liquid.wall_bridge", where))
                             : std::nullopt;
     return {std::move(particle), largest_radius_m, s.liquid.surface_tension_n_per_m, std::move(wall), s.viscosity_pa_s, s.min_gap_ratio * radius_m, s.lubrication, vhat};
+}
+
+double bridge_vhat(const ContactSettings& s, double radius_m) {
+    const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(radius_m, 3);
+    return bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3) / std::pow(radius_m, 3);
+}
+
+template <>
+CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, double radius_m, const std::string& where) {
+    return build_liquid_bridge(s, radius_m, radius_m, bridge_vhat(s, radius_m), where);
 }
 
 }  // namespace demscale::dem

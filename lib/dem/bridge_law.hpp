@@ -27,4 +27,12 @@ bridge::BridgeCurve bridge_curve(const bridge::CurveSourceEntry& source, const C
 CohesionLiquidBridge build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat,
                                          const std::string& where = {});
 
+// V̂ = V/R³ of every bridge between particles of radius_m (m): the liquid of Yun & Park's Eq. 5
+// from the moisture content and the particle's mass.
+double bridge_vhat(const ContactSettings& s, double radius_m);
+
+// The law's builder (dem/law_builder.hpp): build_liquid_bridge with R and V̂ of radius_m.
+template <>
+CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, double radius_m, const std::string& where);
+
 }  // namespace demscale::dem

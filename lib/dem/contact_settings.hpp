@@ -4,6 +4,8 @@
 // protocol.
 #pragma once
 
+#include <string_view>
+
 #include "bridge/bridge_curve.hpp"
 #include "dem/material.hpp"
 #include "similarity/particle_replacement.hpp"
@@ -21,6 +23,7 @@ enum class Lubrication { unbounded, finite_volume };
 
 struct ContactSettings {
     Material material{2200, 5e6, 0.3, 0.5, 0.5, 0.1, 0.3};  // η_r = 0.3: Ai's dashpot (epsd)
+    std::string_view normal_law = "hertz";  // contact.normal_law: a registered normal part's choice (dem/law_parts.hpp)
     bool rolling_resistance = true;
     RollingModel rolling_model = RollingModel::epsd;
     bool wet = true;          // liquid bridges between particles

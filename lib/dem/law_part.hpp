@@ -62,10 +62,18 @@ struct TimeScale {
     std::string_view name;  // "the Rayleigh time"
 };
 
+// The place a part takes in the contact law (ContactLaw<Normal, Tangential, Cohesion, Rolling>).
+enum class Slot { normal, tangential, rolling, cohesion };
+
+// The scene key whose value chooses a slot's part among the registered ones ("contact.normal_law");
+// empty: the slot is chosen by other keys (rolling: contact.rolling_resistance and rolling_model;
+// cohesion: liquid.wet, or SJKR's energy density) or has one part.
+constexpr std::string_view slot_key(Slot slot) { return slot == Slot::normal ? "contact.normal_law" : ""; }
+
 struct LawPart {
-    std::string_view name;                   // "Hertz normal contact"
-    std::span<const Parameter> parameters;
-    bool (*active)(const ContactSettings&);  // whether a scene with these settings uses it
+    std::string_view name = {};              // "Hertz normal contact": also its row in the report
+    std::span<const Parameter> parameters = {};
+    bool (*active)(const ContactSettings&) = nullptr;  // whether a scene with these settings uses it
     // The time scale its stiffness or damping imposes on particles of radius R (m); none: nullptr.
     TimeScale (*time_scale)(const ContactSettings&, double radius_m) = nullptr;
     std::string_view liggghts_extra = {};    // a fixed "property/global ..." the LIGGGHTS deck needs when it acts
@@ -75,6 +83,16 @@ struct LawPart {
     // the scene reader refuses one otherwise, with `allowed_text` as the accepted value.
     bool (*allowed)(const ContactSettings&) = nullptr;
     std::string_view allowed_text = {};
+    // A part a scene chooses (a law of its slot; the others are parameter groups of the law before
+    // them): its slot, the value that names it (the slot key's value, the engine list's and the run
+    // cache's word for it), how a scene is made to choose it (the scene reader calls it for the
+    // slot key's value; tests for every part), and what the LIGGGHTS deck's header says of it
+    // where it has no words there or they differ. Its builder: dem/law_builder.hpp.
+    Slot slot = Slot::normal;
+    std::string_view choice = {};
+    void (*choose)(ContactSettings&) = nullptr;
+    std::string_view liggghts_note = {};
+    bool liggghts_walls = true;  // its deck words apply to wall contacts too
 };
 
 }  // namespace demscale::dem

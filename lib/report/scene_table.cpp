@@ -19,6 +19,11 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
     add("particle density", s.material.density, "kg/m^3");
     add("fill height", s.fill_height_m * 1e3, "mm");
     say("fill", s.fill == slump::FillKind::poured ? "poured in batches, cut to the scene's mass" : "hcp lattice, cut to the scene's mass");
+    // The laws the scene chose, each by its part's name (dem/law_parts.hpp).
+    std::string laws;
+    for (const auto& part : parts)
+        if (!part.choice.empty() && part.active(s)) laws += (laws.empty() ? "" : "; ") + std::string(part.name);
+    say("contact laws", laws);
     say("rolling resistance", !s.rolling_resistance                                  ? "none"
                               : s.rolling_model == slump::RollingModel::epsd2        ? "epsd2 (k_r = k_t R*^2)"
                               : s.rolling_model == slump::RollingModel::constant_torque ? "constant torque (Ai's model A)"

@@ -11,15 +11,24 @@ CohesionChoice cohesion_choice(const SlumpScene& s) {
     return dem::sjkr_part.active(s) ? CohesionChoice::sjkr : CohesionChoice::none;
 }
 
+const dem::LawPart* normal_choice(const SlumpScene& s) {
+    return [&]<class... Law>(std::tuple<Law...>*) {
+        const dem::LawPart* chosen = nullptr;
+        ((chosen = !chosen && Law::part->active(s) ? Law::part : chosen), ...);
+        return chosen;
+    }(static_cast<dem::normal_laws*>(nullptr));
+}
+
 RollingEngine rolling_engine(const SlumpScene& s) {
     if (!s.rolling_resistance) return RollingEngine::none;
     return s.rolling_model == RollingModel::epsd ? RollingEngine::epsd : RollingEngine::run_time;
 }
 
 std::string engine_name(const EngineLine& line, const SlumpScene* s) {
-    std::string name = line.cohesion == CohesionChoice::liquid_bridge ? "liquid bridge"
-                       : line.cohesion == CohesionChoice::sjkr        ? "SJKR adhesion"
-                                                                      : "no cohesion";
+    std::string name = std::string(line.normal ? line.normal->name : "no normal law") + ", ";
+    name += line.cohesion == CohesionChoice::liquid_bridge ? "liquid bridge"
+            : line.cohesion == CohesionChoice::sjkr        ? "SJKR adhesion"
+                                                           : "no cohesion";
     if (line.rolling == RollingEngine::none) name += ", free rolling";
     else if (line.rolling == RollingEngine::epsd) name += ", epsd rolling";
     else if (s) name += s->rolling_model == RollingModel::epsd2 ? ", epsd2 rolling" : ", constant_torque rolling";
@@ -28,7 +37,7 @@ std::string engine_name(const EngineLine& line, const SlumpScene* s) {
 }
 
 EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list) {
-    const EngineLine wanted{cohesion_choice(s), rolling_engine(s), ledger};
+    const EngineLine wanted{normal_choice(s), cohesion_choice(s), rolling_engine(s), ledger};
     if (std::find(list.begin(), list.end(), wanted) != list.end()) return wanted;
     std::string lines;
     for (const auto& line : list) lines += (lines.empty() ? "" : "; ") + engine_name(line);

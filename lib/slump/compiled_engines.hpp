@@ -1,7 +1,7 @@
 // The slump engines that are compiled: one line each, the one list (as LIGGGHTS keeps its compiled
-// combinations in one whitelist). Every engine has Hertz normal and Mindlin tangential contact; a
-// line names the cohesion law, the rolling law and whether the energy ledger books (slump
-// --energy). A scene whose choice is on no line is refused, exit 2, naming the choice and this
+// combinations in one whitelist). Every engine has Mindlin tangential contact; a line names the
+// normal law (a registered part: dem/law_parts.hpp), the cohesion law, the rolling law and whether
+// the energy ledger books (slump --energy). A scene whose choice is on no line is refused, exit 2, naming the choice and this
 // list. Each line is one instantiation of the protocol's engine, compiled in the
 // slump_engines_*.cpp of its cohesion law (compile cost: docs/development.md). Ai's rolling law
 // (epsd, every shipped scene's) keeps an engine of its own: run-time choice costs it 2.2 % more
@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 
+#include "dem/law_parts.hpp"
 #include "slump/slump_scene.hpp"
 
 namespace demscale::slump {
@@ -21,6 +22,7 @@ enum class CohesionChoice { none, liquid_bridge, sjkr };
 enum class RollingEngine { none, epsd, run_time };
 
 struct EngineLine {
+    const dem::LawPart* normal;  // a part of dem::normal_laws
     CohesionChoice cohesion;
     RollingEngine rolling;
     bool ledger;  // the energy ledger books every loss
@@ -28,22 +30,22 @@ struct EngineLine {
 };
 
 inline constexpr EngineLine compiled_engines[] = {
-    // cohesion                     rolling                  ledger
-    {CohesionChoice::none,          RollingEngine::epsd,     false},  // the dry control of every study
-    {CohesionChoice::none,          RollingEngine::none,     false},
-    {CohesionChoice::none,          RollingEngine::run_time, false},
-    {CohesionChoice::none,          RollingEngine::epsd,     true},
-    {CohesionChoice::none,          RollingEngine::none,     true},
-    {CohesionChoice::liquid_bridge, RollingEngine::epsd,     false},  // the wet reference scene
-    {CohesionChoice::liquid_bridge, RollingEngine::none,     false},
-    {CohesionChoice::liquid_bridge, RollingEngine::run_time, false},
-    {CohesionChoice::liquid_bridge, RollingEngine::epsd,     true},
-    {CohesionChoice::liquid_bridge, RollingEngine::none,     true},
-    {CohesionChoice::sjkr,          RollingEngine::epsd,     false},
-    {CohesionChoice::sjkr,          RollingEngine::none,     false},
-    {CohesionChoice::sjkr,          RollingEngine::run_time, false},
-    {CohesionChoice::sjkr,          RollingEngine::epsd,     true},
-    {CohesionChoice::sjkr,          RollingEngine::none,     true},
+    // normal            cohesion                      rolling                  ledger
+    {&dem::hertz_part, CohesionChoice::none,          RollingEngine::epsd,     false},  // the dry control of every study
+    {&dem::hertz_part, CohesionChoice::none,          RollingEngine::none,     false},
+    {&dem::hertz_part, CohesionChoice::none,          RollingEngine::run_time, false},
+    {&dem::hertz_part, CohesionChoice::none,          RollingEngine::epsd,     true},
+    {&dem::hertz_part, CohesionChoice::none,          RollingEngine::none,     true},
+    {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::epsd,     false},  // the wet reference scene
+    {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::none,     false},
+    {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::run_time, false},
+    {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::epsd,     true},
+    {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::none,     true},
+    {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::epsd,     false},
+    {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::none,     false},
+    {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::run_time, false},
+    {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::epsd,     true},
+    {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::none,     true},
 };
 
 // The cohesion law a scene chooses: a liquid bridge when wet, SJKR adhesion when it gives a cohesion
@@ -53,7 +55,10 @@ CohesionChoice cohesion_choice(const SlumpScene& s);
 // The rolling engine a scene chooses.
 RollingEngine rolling_engine(const SlumpScene& s);
 
-// "liquid bridge, epsd rolling, energy ledger": a line for people (with the scene: its run-time rolling law).
+// The registered normal law the scene chooses (contact.normal_law).
+const dem::LawPart* normal_choice(const SlumpScene& s);
+
+// "Hertz normal contact, liquid bridge, epsd rolling, energy ledger": a line for people (with the scene: its run-time rolling law).
 std::string engine_name(const EngineLine& line, const SlumpScene* s = nullptr);
 
 // The line that runs this scene (with the ledger or not); an InputError naming the scene's choice

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <vector>
 
 #include "bridge/mikami.hpp"
 #include "dem/bridge_law.hpp"
@@ -153,18 +154,22 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
                                 : model == slump::RollingModel::epsd2         ? " rolling_friction epsd2"
                                                                               : " rolling_friction epsd3";
-    // The acting parts' own pair style words (a cohesion model) go before the rolling model, their
-    // keyword/value settings after all models.
-    std::string models, settings;
+    // The acting parts' own pair style words (normal, tangential and cohesion models) go before the
+    // rolling model, their keyword/value settings after all models; a part without words says so.
+    // The bridge's words go to the particle pairs only (LIGGGHTS refuses it on walls).
+    std::string models, wall_models, settings;
+    std::vector<std::string> unmatched;
     for (const auto& part : dem::law_parts())
         if (part.active(sc)) {
             if (!part.liggghts_model.empty()) models += " " + std::string(part.liggghts_model);
+            if (!part.liggghts_model.empty() && part.liggghts_walls) wall_models += " " + std::string(part.liggghts_model);
             if (!part.liggghts_setting.empty()) settings += " " + std::string(part.liggghts_setting);
+            if (!part.liggghts_note.empty()) unmatched.push_back(std::string(part.name) + ": " + std::string(part.liggghts_note));
         }
     const std::string rolling_words = sc.rolling_resistance ? rolling : std::string();
-    // The bridge acts between particles only (LIGGGHTS refuses it on walls).
-    const std::string laws = "model hertz tangential history" + models + (sc.wet ? " cohesion easo/capillary/viscous" : "") + rolling_words + settings;
-    const std::string wall_laws = "model hertz tangential history" + models + rolling_words + settings;
+    auto words = [](const std::string& w) { return w.empty() ? w : w.substr(1); };
+    const std::string laws = words(models + rolling_words + settings);
+    const std::string wall_laws = words(wall_models + rolling_words + settings);
     const WetDeck wet = sc.wet ? wet_deck(sc) : WetDeck{};
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
@@ -172,6 +177,7 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     s << "# Spreading runs the scene's whole spread_time_s (" << sc.spread_time_s
       << " s): LIGGGHTS has no rest criterion; compare with demscale slump --start settled.csv --fixed-time.\n";
     for (const auto& n : wet.notes) s << "# " << n << "\n";
+    for (const auto& n : unmatched) s << "# " << n << "\n";
     // Everything that moves acts on group `pile`; the floor's grains (if any) are never integrated.
     const std::string pile = grains == 0 ? "all" : "pile";
     s << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\nunits si\n"

@@ -67,6 +67,12 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
     l.push_back({"lubrication", static_cast<double>(s.lubrication), s.wet && s.viscosity_pa_s > 0,
                  [](SlumpScene& t, double v) { t.lubrication = as<dem::Lubrication>(v); }});
     curve_lines(bridge::BridgeGeometry::sphere_wall, s.wet && s.wet_walls, &SlumpScene::wall_curve, "wall_curve_");
+    // A law a slot key chose, other than the slot's first (default) part, has its line, law_CHOICE,
+    // written where it acts: scenes with the default laws keep their keys. (The other slots' laws
+    // follow from keys that have lines of their own: wet, rolling_model, SJKR's k_c.)
+    for (const auto& part : parts)
+        if (!part.choice.empty() && !dem::slot_key(part.slot).empty() && &part != &dem::default_part(part.slot, parts))
+            l.push_back({"law_" + std::string(part.choice), 1, part.active(s), [choose = part.choose](SlumpScene& t, double) { choose(t); }});
     for (const auto& part : parts)
         for (const auto& p : part.parameters)
             l.push_back({std::string(p.key), p.get(s), part.active(s), [set = p.set](SlumpScene& t, double v) { set(t, v); }});

@@ -4,7 +4,7 @@
 
 namespace demscale::slump::protocol {
 
-template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, CohesionSjkr, Particles, bool,
+template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, Particles, bool,
                                          const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

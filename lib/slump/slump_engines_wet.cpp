@@ -4,7 +4,7 @@
 
 namespace demscale::slump::protocol {
 
-template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, CohesionLiquidBridge, Particles, bool,
+template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, Particles, bool,
                                          const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

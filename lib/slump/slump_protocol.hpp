@@ -19,6 +19,8 @@
 #include "core/interrupt.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/contact_law.hpp"
+#include "dem/law_builder.hpp"
+#include "dem/law_parts.hpp"
 #include "dem/laws/adhesion_sjkr.hpp"
 #include "dem/simulation.hpp"
 #include "io/atomic_file.hpp"
@@ -246,18 +248,17 @@ inline constexpr CohesionChoice cohesion_of = std::is_same_v<Cohesion, CohesionL
                                                : std::is_same_v<Cohesion, CohesionSjkr>      ? CohesionChoice::sjkr
                                                                                                : CohesionChoice::none;
 
-// The engine of one line of the list (slump/compiled_engines.hpp): its contact law, the pour
-// (without the ledger) when asked, then the protocol.
+// The engine of one line of the list (slump/compiled_engines.hpp): its contact law (built by
+// dem/law_builder.hpp), the pour (without the ledger) when asked, then the protocol.
 template <EngineLine Line, class Cohesion>
-SlumpResult run_line(const SlumpScene& s, Cohesion cohesion, Particles particles, bool pour,
-                     const std::function<void(const SlumpProgress&)>& progress, const SlumpPhases& phases) {
+SlumpResult run_line(const SlumpScene& s, Particles particles, bool pour, const std::function<void(const SlumpProgress&)>& progress,
+                     const SlumpPhases& phases) {
+    using Normal = typename law_of<Line.normal, normal_laws>::type;
+    static_assert(!std::is_void_v<Normal>, "an engine line names a normal law registered in dem::normal_laws");
     using Rolling = std::conditional_t<Line.rolling == RollingEngine::none, RollingNone,
                                        std::conditional_t<Line.rolling == RollingEngine::epsd, RollingEpsd, RollingChosen>>;
-    using Law = ContactLaw<NormalHertz, TangentialMindlin, Cohesion, Rolling>;
-    Law law = [&] {
-        if constexpr (Line.rolling == RollingEngine::run_time) return Law(s.material, std::move(cohesion), RollingChosen(s.material, s.rolling_model));
-        else return Law(s.material, std::move(cohesion));
-    }();
+    using Law = ContactLaw<Normal, TangentialMindlin, Cohesion, Rolling>;
+    Law law = build_contact_law<Law>(s, s.radius_m, s.source);
     ProtocolState st;
     if (pour) {  // its wall time counts in the run's
         const auto t0 = std::chrono::steady_clock::now();
@@ -268,17 +269,17 @@ SlumpResult run_line(const SlumpScene& s, Cohesion cohesion, Particles particles
 }
 
 // The whole protocol with this cohesion law, on the engine of `line` (a line of the list with this
-// cohesion law: listed_engine chose it); pour: fill the cone by pouring first (else `particles` is
+// cohesion law: listed_engine chose it), the law built from the scene; pour: fill the cone by pouring first (else `particles` is
 // the start). Every line of the list with this cohesion law is compiled here, and only those.
 template <class Cohesion>
-SlumpResult run_protocol(const SlumpScene& s, const EngineLine& line, Cohesion cohesion, Particles particles, bool pour,
+SlumpResult run_protocol(const SlumpScene& s, const EngineLine& line, Particles particles, bool pour,
                          const std::function<void(const SlumpProgress&)>& progress, const SlumpPhases& phases) {
     SlumpResult result;
     bool ran = false;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         auto try_line = [&]<EngineLine Line>() {
             if constexpr (Line.cohesion == cohesion_of<Cohesion>)
-                if (!ran && Line == line) result = run_line<Line>(s, std::move(cohesion), std::move(particles), pour, progress, phases), ran = true;
+                if (!ran && Line == line) result = run_line<Line, Cohesion>(s, std::move(particles), pour, progress, phases), ran = true;
         };
         (try_line.template operator()<compiled_engines[I]>(), ...);
     }(std::make_index_sequence<std::size(compiled_engines)>{});
@@ -287,11 +288,11 @@ SlumpResult run_protocol(const SlumpScene& s, const EngineLine& line, Cohesion c
 }
 
 // Built in slump_engines_*.cpp, one file each.
-extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const EngineLine&, CohesionNone, Particles, bool,
+extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const EngineLine&, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
-extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, CohesionLiquidBridge, Particles, bool,
+extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, Particles, bool,
                                                                const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
-extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, CohesionSjkr, Particles, bool,
+extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol

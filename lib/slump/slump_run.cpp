@@ -4,7 +4,6 @@
 
 #include "dem/law_parts.hpp"
 #include "dem/time_step.hpp"
-#include "slump/scene_bridges.hpp"
 #include "slump/slump_protocol.hpp"
 
 namespace demscale::slump {
@@ -46,12 +45,12 @@ SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpP
     if (s.wet && smallest != particles.radius.end() && *smallest != *largest)
         throw InputError("--start", "radii from " + format_short(*smallest * 1e3) + " to " + format_short(*largest * 1e3) + " mm",
                          "spheres of one radius for a wet scene (equal-sphere bridges; docs/models/liquid-bridge.md)");
-    // The cohesion law built here; its file's engines take the rolling law and the ledger from the line.
+    // Each cohesion law's engines are compiled in a file of their own (slump_engines_*.cpp); they
+    // take the normal and rolling laws and the ledger from the line and build the law.
     using protocol::run_protocol;
-    res = line.cohesion == CohesionChoice::liquid_bridge ? run_protocol(s, line, scene_bridge(s, s.radius_m), std::move(particles), pour, progress, phases)
-          : line.cohesion == CohesionChoice::sjkr
-              ? run_protocol(s, line, CohesionSjkr{s.cohesion_energy_density}, std::move(particles), pour, progress, phases)
-              : run_protocol(s, line, CohesionNone{}, std::move(particles), pour, progress, phases);
+    res = line.cohesion == CohesionChoice::liquid_bridge ? run_protocol<CohesionLiquidBridge>(s, line, std::move(particles), pour, progress, phases)
+          : line.cohesion == CohesionChoice::sjkr        ? run_protocol<CohesionSjkr>(s, line, std::move(particles), pour, progress, phases)
+                                                         : run_protocol<CohesionNone>(s, line, std::move(particles), pour, progress, phases);
     res.energy_ledger = phases.energy_ledger;
     res.dt = s.dt_s;
     res.critical_dt = critical;

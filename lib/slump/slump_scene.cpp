@@ -1,10 +1,11 @@
 #include "slump/slump_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
 #include "bridge/curve_sources.hpp"
-#include "bridge/liquid_volume.hpp"
 #include "dem/bridge_law.hpp"
 #include "core/input_error.hpp"
 #include "io/toml_reader.hpp"
@@ -28,20 +29,21 @@ std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<cons
         {"check", {"slump_tolerance", "spread_tolerance", "profile_tolerance", "min_opening_diameters", "min_fill_diameters", "min_particles"}},
         {"similarity", {"scale_factors", "exponents"}},
     };
-    for (const auto& part : parts)
-        for (const auto& p : part.parameters) {
-            const auto dot = p.key.find('.');
-            schema[std::string(p.key.substr(0, dot))].push_back(p.key.substr(dot + 1));
-        }
+    auto add = [&](std::string_view key) {
+        const auto dot = key.find('.');
+        auto& names = schema[std::string(key.substr(0, dot))];
+        if (std::find(names.begin(), names.end(), key.substr(dot + 1)) == names.end()) names.push_back(key.substr(dot + 1));
+    };
+    for (const auto& part : parts) {
+        if (!part.choice.empty() && !dem::slot_key(part.slot).empty()) add(dem::slot_key(part.slot));
+        for (const auto& p : part.parameters) add(p.key);
+    }
     return schema;
 }
 void positive(double x, const std::string& f) { require_positive(x, f); }
 }  // namespace
 
-double bridge_vhat(const SlumpScene& s) {
-    const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
-    return bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3) / std::pow(s.radius_m, 3);
-}
+double bridge_vhat(const SlumpScene& s) { return dem::bridge_vhat(s, s.radius_m); }
 
 double cone_radius_at(const SlumpScene& s, double z) {
     return 0.5 * s.bottom_diameter_m - 0.5 * (s.bottom_diameter_m - s.top_diameter_m) * z / s.height_m;
@@ -118,6 +120,26 @@ void read_law_choices(const io::TomlReader& r, SlumpScene& s) {
     }
     if (auto v = r.text("liquid.rupture"))
         r.check("liquid.rupture", [&] { s.bridge.rupture = bridge::parse_rupture_law(*v, "liquid.rupture"); });
+}
+
+// The law of each slot that a key chooses (contact.normal_law): one of its registered parts' choices.
+void read_slot_choices(const io::TomlReader& r, SlumpScene& s, std::span<const dem::LawPart> parts) {
+    for (const auto slot : {dem::Slot::normal, dem::Slot::tangential, dem::Slot::rolling, dem::Slot::cohesion}) {
+        const std::string key(dem::slot_key(slot));
+        const auto value = key.empty() ? std::nullopt : r.text(key);
+        if (!value) continue;
+        std::string accepted;
+        for (const auto& part : parts)
+            if (part.slot == slot && !part.choice.empty()) {
+                if (part.choice == *value) {
+                    part.choose(s);
+                    accepted.clear();
+                    break;
+                }
+                accepted += (accepted.empty() ? "\"" : ", \"") + std::string(part.choice) + "\"";
+            }
+        if (!accepted.empty()) throw InputError(r.where(key, key), "\"" + *value + "\"", "one of " + accepted);
+    }
 }
 
 // Every registered part's parameters from its table, then what this scene's choices rule out.
@@ -221,6 +243,7 @@ SlumpScene load_slump_scene(const std::string& path, std::span<const dem::LawPar
     s.source = path;
     read_geometry_and_fill(r, s);
     read_law_choices(r, s);  // before the parameters: which parts a scene may use depends on them
+    read_slot_choices(r, s, parts);
     read_law_parameters(r, s, parts);
     read_run_and_check(r, s);
     check_consistency(r, s);

@@ -186,6 +186,7 @@ case $case_name in
     done
     for f in slump_profile.csv slump_history.csv slump_final.vtp slump_side.png; do [ -s "$work/s/$f" ] || fail "$f missing"; done
     grep -q '"energy_j"' "$work/out" && fail "energy ledger printed without --energy"
+    tr -d ' \n' <"$work/out" | grep -q '"contact_laws":\["hertz","mindlin","liquid_bridge"\]' || fail "contact laws not named"
     # With --energy: the same physics, and a ledger that balances (conservation of energy) to 3 %.
     cp "$work/out" "$work/plain.json"
     expect 0 '"energy_balance_error"' -- "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --format json --energy --out "$work/e"
@@ -248,7 +249,7 @@ case $case_name in
     [ ! -e "$work/s" ] || fail "a refused run created output"
     # The ledger with a rolling law the engine list compiles none for: refused naming the list.
     { cat "$src/data/scenes/small_wet.toml"; printf '[contact]\nrolling_model = "epsd2"\nrolling_damping = 0\n'; } >"$work/epsd2.toml"
-    expect 2 'the contact laws liquid bridge, epsd2 rolling, energy ledger: accepted one of the compiled engines \(lib/slump/compiled_engines.hpp\): no cohesion, epsd rolling;' -- \
+    expect 2 'the contact laws Hertz normal contact, liquid bridge, epsd2 rolling, energy ledger: accepted one of the compiled engines \(lib/slump/compiled_engines.hpp\): Hertz normal contact, no cohesion, epsd rolling;' -- \
       "$demscale" slump --scene "$work/epsd2.toml" --energy --out "$work/s"
     [ ! -e "$work/s" ] || fail "a refused run created output" ;;
   check_exponent_pass_and_fail)

@@ -11,6 +11,7 @@
 
 #include "bridge/curve_sources.hpp"
 #include "core/input_error.hpp"
+#include "dem/law_builder.hpp"
 #include "dem/law_parts.hpp"
 #include "report/scene_table.hpp"
 #include "similarity/quantity_catalogue.hpp"
@@ -168,4 +169,49 @@ TEST_CASE("docs/file-formats.md lists every bridge curve source a scene can writ
             CHECK((cells.find("`" + std::string(source.value) + "`") != std::string::npos) == source.has(geometry));
         }
     }
+}
+
+TEST_CASE("Every law a scene chooses declares its slot, choice, builder, deck words, report row and cache-key line",
+          "[dem][parameters][engines]") {
+    int chosen = 0;
+    for (const auto& part : law_parts()) {
+        if (part.choice.empty()) continue;  // a parameter group of the law before it
+        ++chosen;
+        INFO(part.name);
+        REQUIRE(part.choose);
+        // Choosing it makes it act, and its slot's other laws not.
+        slump::SlumpScene s;
+        part.choose(s);
+        CHECK(part.active(s));
+        for (const auto& other : law_parts())
+            if (&other != &part && other.slot == part.slot && !other.choice.empty()) CHECK_FALSE(other.active(s));
+        // Its words in the LIGGGHTS deck, or what the deck says instead.
+        CHECK((!part.liggghts_model.empty() || !part.liggghts_note.empty()));
+        // Its report row: the scene table names it among the contact laws.
+        bool named = false;
+        for (const auto& row : report::scene_table(s, "test").rows)
+            if (std::get<std::string>(row[0]) == "contact laws")
+                named = std::get<std::string>(row[1]).find(part.name) != std::string::npos;
+        CHECK(named);
+        // Its cache-key line: a scene that chooses another law of the slot has another key.
+        for (const auto& other : law_parts())
+            if (&other != &part && other.slot == part.slot && !other.choice.empty()) {
+                slump::SlumpScene t;
+                other.choose(t);
+                CHECK(slump::scene_key(s) != slump::scene_key(t));
+            }
+    }
+    CHECK(chosen == 4);
+    // Its builder: every registered normal law is built from the settings (a compile error
+    // otherwise), declares the normal slot, and pushes apart at an overlap.
+    [&]<class... Law>(std::tuple<Law...>*) {
+        ContactPair c;
+        c.r_eff = 0.5e-3, c.sqrt_r_eff = std::sqrt(c.r_eff), c.overlap = 1e-6, c.contact_radius = std::sqrt(c.r_eff * c.overlap);
+        auto check = [&]<class L>() {
+            INFO(L::part->name);
+            CHECK(L::part->slot == Slot::normal);
+            CHECK(build_contact_law<ContactLaw<typename L::law, TangentialMindlin>>(ContactSettings{}, 1e-3).normal.elastic_force(c) > 0);
+        };
+        (check.template operator()<Law>(), ...);
+    }(static_cast<normal_laws*>(nullptr));
 }

@@ -19,6 +19,7 @@ TEST_CASE("Every shipped scene's laws are a compiled engine, with and without th
             CHECK(line.ledger == ledger);
             CHECK((line.rolling != RollingEngine::none) == s.rolling_resistance);
             CHECK((line.cohesion == CohesionChoice::liquid_bridge) == s.wet);
+            CHECK(line.normal->active(s));
         }
         ++scenes;
     }
@@ -28,17 +29,17 @@ TEST_CASE("Every shipped scene's laws are a compiled engine, with and without th
 TEST_CASE("A scene whose laws are on no line of the list is refused, naming its laws and the list", "[slump][engines]") {
     SlumpScene s = load_slump_scene(DEMSCALE_SOURCE_DIR "/data/scenes/kantro_dry.toml");
     s.rolling_model = RollingModel::epsd2;
-    const EngineLine wet_only[] = {{CohesionChoice::liquid_bridge, RollingEngine::epsd, false}};
+    const EngineLine wet_only[] = {{&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::epsd, false}};
     try {
         listed_engine(s, false, wet_only);
         FAIL("a dry scene ran on a list of one wet engine");
     } catch (const InputError& e) {
-        CHECK(e.value() == "the contact laws no cohesion, epsd2 rolling");
-        CHECK(e.accepted() == "one of the compiled engines (lib/slump/compiled_engines.hpp): liquid bridge, epsd rolling");
+        CHECK(e.value() == "the contact laws Hertz normal contact, no cohesion, epsd2 rolling");
+        CHECK(e.accepted() == "one of the compiled engines (lib/slump/compiled_engines.hpp): Hertz normal contact, liquid bridge, epsd rolling");
         CHECK(e.field().find("kantro_dry.toml") != std::string::npos);
     }
     // The ledger is part of the choice: the same scene with the ledger is not the line without it.
-    const EngineLine dry_plain[] = {{CohesionChoice::none, RollingEngine::run_time, false}};
+    const EngineLine dry_plain[] = {{&dem::hertz_part, CohesionChoice::none, RollingEngine::run_time, false}};
     CHECK_NOTHROW(listed_engine(s, false, dry_plain));
     CHECK_THROWS_AS(listed_engine(s, true, dry_plain), InputError);
     // The shipped list compiles no ledger for the run-time rolling laws.

@@ -21,6 +21,7 @@ struct CohesionSjkr {
     using StateFor = State;
     double energy_density;  // k_c, J/m³
 
+    static CohesionSjkr build(const ContactSettings& s, double, const std::string&) { return {s.cohesion_energy_density}; }
     double range() const { return 0.0; }
     bool holds(const State&) const { return false; }
     bool needs_gap_velocity() const { return false; }
@@ -59,6 +60,11 @@ inline constexpr LawPart sjkr_part{
     "simplified JKR adhesion (SJKR)", sjkr_parameters, [](const ContactSettings& s) { return !s.wet && s.cohesion_energy_density > 0; },
     nullptr, {}, "cohesion sjkr", "tangential_reduce on",
     [](const ContactSettings& s) { return !s.wet || s.cohesion_energy_density == 0; },
-    "0 in a wet scene (its liquid bridges are the cohesion; liquid.wet = false for a dry adhesive powder)"};
+    "0 in a wet scene (its liquid bridges are the cohesion; liquid.wet = false for a dry adhesive powder)",
+    Slot::cohesion, "sjkr",
+    [](ContactSettings& s) {  // chosen by any k_c > 0 in a dry scene: 10⁴ J/m³ where it had none
+        s.wet = false;
+        if (s.cohesion_energy_density == 0) s.cohesion_energy_density = 1e4;
+    }};
 
 }  // namespace demscale::dem

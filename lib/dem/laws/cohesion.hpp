@@ -68,6 +68,9 @@ struct LiquidBridge {
     Lubrication lubrication = Lubrication::unbounded;  // the normal lubrication's form
     double vhat = 0;                                // V/R³ of every bridge (finite_volume reads it)
 
+    // The wet settings' bridge for particles of radius_m: dem/bridge_law.cpp (common radius only).
+    static LiquidBridge build(const ContactSettings& s, double radius_m, const std::string& where);
+
     // per_pair: each pair's bridge has R = its harmonic-mean radius 2 R_i R_j / (R_i + R_j) (R_i at
     // a wall; Mikami et al. 1998, Willett et al. 2000) and the same V̂ = V/R³: the liquid of Eq. 5
     // per bridge grows with the pair's mass. With equal radii both give the same bits.
@@ -204,8 +207,16 @@ inline constexpr Parameter bridge_parameters[] = {
      LiggghtsKind::scalar, [](const ContactSettings& s) { return s.liquid.moisture_content; },
      [](ContactSettings& s, double x) { s.liquid.moisture_content = x; }},
 };
-inline constexpr LawPart bridge_part{"static liquid bridge (Mikami et al. 1998)", bridge_parameters,
-                                     [](const ContactSettings& s) { return s.wet; }};
+// Chosen by liquid.wet (its curve by liquid.bridge_variant: bridge/curve_sources.hpp). LIGGGHTS
+// refuses the bridge on walls, so its words go to the particle pair style only.
+inline constexpr LawPart bridge_part{.name = "static liquid bridge (Mikami et al. 1998)",
+                                     .parameters = bridge_parameters,
+                                     .active = [](const ContactSettings& s) { return s.wet; },
+                                     .liggghts_model = "cohesion easo/capillary/viscous",
+                                     .slot = Slot::cohesion,
+                                     .choice = "liquid_bridge",
+                                     .choose = [](ContactSettings& s) { s.wet = true; },
+                                     .liggghts_walls = false};
 
 // Parameters of the bridge's viscous part (docs/models/bridge-viscous.md). μ is a viscosity: kept
 // (the same liquid), or scaled by --scale viscosity.
@@ -225,6 +236,7 @@ inline constexpr LawPart bridge_viscous_part{
     [](const ContactSettings& s, double radius) {
         const double pair = 8.0 / 9.0 * s.material.density * radius * radius * s.min_gap_ratio / s.viscosity_pa_s;
         return TimeScale{s.wet_walls ? pair / 2 : pair, 0.2, "the lubrication time 2 m*/c"};
-    }};
+    },
+    {}, {}, {}, nullptr, {}, Slot::cohesion};
 
 }  // namespace demscale::dem

@@ -36,8 +36,10 @@ struct NormalHertz {
     }
 };
 
-// Parameters (docs/models/hertz-normal.md). E is a stress: kept, or scaled by --scale youngs_modulus.
-inline constexpr Parameter hertz_parameters[] = {
+// The elastic material (docs/models/hertz-normal.md): E, ν and e act in every contact (the Mindlin
+// spring reads E and ν, every normal law's damping e), whichever normal law a scene chooses. E is a
+// stress: kept, or scaled by --scale youngs_modulus.
+inline constexpr Parameter elastic_parameters[] = {
     {"contact.youngs_modulus_pa", "Young's modulus E", "Pa", {2, 1, -2}, 5e6, {0, unbounded}, Replacement::scalable,
      "youngs_modulus", "youngsModulus", LiggghtsKind::per_type,
      [](const ContactSettings& s) { return s.material.youngs_modulus; },
@@ -50,9 +52,18 @@ inline constexpr Parameter hertz_parameters[] = {
      [](ContactSettings& s, double x) { s.material.restitution = x; }},
 };
 
-// A stable step: dt ≤ 0.2 × the Rayleigh time (docs/model.md, time_step.hpp).
-inline constexpr LawPart hertz_part{
-    "Hertz normal contact", hertz_parameters, [](const ContactSettings&) { return true; },
+// A stable step: dt ≤ 0.2 × the Rayleigh time of E, ν and ρ (docs/model.md, time_step.hpp), which
+// the Mindlin spring imposes whatever the normal law.
+inline constexpr LawPart elastic_part{
+    "elastic material", elastic_parameters, [](const ContactSettings&) { return true; },
     [](const ContactSettings& s, double radius) { return TimeScale{rayleigh_time(s.material, radius), 0.2, "the Rayleigh time"}; }};
+
+// Hertz's law, the default of contact.normal_law; LIGGGHTS' model hertz.
+inline constexpr LawPart hertz_part{.name = "Hertz normal contact",
+                                    .active = [](const ContactSettings& s) { return s.normal_law == "hertz"; },
+                                    .liggghts_model = "model hertz",
+                                    .slot = Slot::normal,
+                                    .choice = "hertz",
+                                    .choose = [](ContactSettings& s) { s.normal_law = "hertz"; }};
 
 }  // namespace demscale::dem

@@ -154,6 +154,7 @@ struct RollingChosen {
 
     RollingChosen(const Material& m, RollingModel chosen)
         : model(chosen), epsd(m), epsd2(m), constant(m), eta_r(chosen == RollingModel::constant_torque ? 0.0 : m.rolling_damping) {}
+    static RollingChosen build(const ContactSettings& s, double, const std::string&) { return {s.material, s.rolling_model}; }
 
     template <class Lost>
     DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force,
@@ -180,8 +181,12 @@ inline constexpr Parameter rolling_parameters[] = {
      LiggghtsKind::per_type_pair, [](const ContactSettings& s) { return s.material.rolling_friction; },
      [](ContactSettings& s, double x) { s.material.rolling_friction = x; }},
 };
-inline constexpr LawPart rolling_part{"rolling resistance", rolling_parameters,
-                                      [](const ContactSettings& s) { return s.rolling_resistance; }};
+// Its law (epsd, epsd2 or constant torque: contact.rolling_model) is chosen at run time or by
+// the engine list (slump/compiled_engines.hpp), so this part is the slot's parameter group.
+inline constexpr LawPart rolling_part{.name = "rolling resistance",
+                                      .parameters = rolling_parameters,
+                                      .active = [](const ContactSettings& s) { return s.rolling_resistance; },
+                                      .slot = Slot::rolling};
 
 inline constexpr Parameter rolling_dashpot_parameters[] = {
     {"contact.rolling_damping", "rolling damping eta_r", "1", {}, 0.3, {0, 1, false, false}, Replacement::kept, {},
@@ -193,6 +198,6 @@ inline constexpr Parameter rolling_dashpot_parameters[] = {
 inline constexpr LawPart rolling_dashpot_part{
     "rolling spring and dashpot (Ai et al. 2011, model C)", rolling_dashpot_parameters,
     [](const ContactSettings& s) { return s.rolling_resistance && s.rolling_model == RollingModel::epsd; }, nullptr,
-    "property/global rollingStiffness scalar 2.25"};
+    "property/global rollingStiffness scalar 2.25", {}, {}, nullptr, {}, Slot::rolling};
 
 }  // namespace demscale::dem

@@ -128,7 +128,12 @@ inline constexpr Parameter mindlin_parameters[] = {
      LiggghtsKind::per_type_pair, [](const ContactSettings& s) { return s.material.friction; },
      [](ContactSettings& s, double x) { s.material.friction = x; }},
 };
-inline constexpr LawPart mindlin_part{"Mindlin tangential contact with Coulomb friction", mindlin_parameters,
-                                      [](const ContactSettings&) { return true; }};
+inline constexpr LawPart mindlin_part{.name = "Mindlin tangential contact with Coulomb friction",
+                                      .parameters = mindlin_parameters,
+                                      .active = [](const ContactSettings&) { return true; },
+                                      .liggghts_model = "tangential history",
+                                      .slot = Slot::tangential,
+                                      .choice = "mindlin",
+                                      .choose = [](ContactSettings&) {}};
 
 }  // namespace demscale::dem
