@@ -12,7 +12,7 @@ struct Material {
     double friction = 0.5;         // Coulomb sliding friction μ
     double rolling_friction = 0.1; // μ_r
     double rolling_damping = 0;    // η_r, the rolling dashpot's fraction of critical damping (Ai et al. 2011; 0: none)
-    double linear_stiffness = 0;   // N/m, for the linear spring law (0: unused)
+    double linear_stiffness = 400; // N/m, of the linear spring law: about what LIGGGHTS' hooke takes for 1 mm spheres of the default material at 0.3 m/s
     double tangential_stiffness_ratio = 2.0 / 7.0;  // κ = k_t / k_n of the linear tangential spring
 };
 
