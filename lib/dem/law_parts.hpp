@@ -14,6 +14,7 @@
 #include "dem/laws/adhesion_sjkr.hpp"
 #include "dem/laws/cohesion.hpp"
 #include "dem/laws/normal_hertz.hpp"
+#include "dem/laws/normal_linear.hpp"
 #include "dem/laws/rolling.hpp"
 #include "dem/laws/tangential.hpp"
 
@@ -28,7 +29,8 @@ struct Registered {
 
 // The normal laws a scene can choose (contact.normal_law), one line each.
 using normal_laws = std::tuple<
-    Registered<NormalHertz, hertz_part>
+    Registered<NormalHertz, hertz_part>,
+    Registered<NormalLinear, hooke_part>
 >;
 
 // The law of a registered part, in a list of Registered<...>.

@@ -46,6 +46,7 @@ inline constexpr EngineLine compiled_engines[] = {
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::run_time, false},
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::epsd,     true},
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::none,     true},
+    {&dem::hooke_part, CohesionChoice::none,          RollingEngine::epsd,     false},  // a linear-spring dry scene
 };
 
 // The cohesion law a scene chooses: a liquid bridge when wet, SJKR adhesion when it gives a cohesion

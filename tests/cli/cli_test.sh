@@ -237,6 +237,20 @@ case $case_name in
     grep -v '^#' "$work/out" | awk -F, 'NR == 2 {for (i = 1; i <= 4; ++i) if (!($i + 0 > 0) || $i ~ /n|N/) exit 1; ok = 1} END {exit !ok}' ||
       { cat "$work/out" >&2; fail "not four positive finite numbers"; }
     expect 2 '--core-link = given with --dem: accepted on its own' -- "$demscale" bench --core-link --dem ;;
+  slump_hooke_dry)
+    # A dry column on the linear spring (contact.normal_law = "hooke"): it runs on its engine with
+    # small overlaps (the default 400 N/m holds a 2.2 mm column to a few % of R), names its laws, and
+    # its LIGGGHTS deck uses model hooke and says how the stiffness differs.
+    { cat "$src/data/scenes/small_wet.toml"; printf '[contact]\nnormal_law = "hooke"\n[liquid]\nwet = false\n'; } >"$work/hooke.toml"
+    expect 0 '"final_height_mm"' -- "$demscale" slump --scene "$work/hooke.toml" --format json --no-png --out "$work/h"
+    tr -d ' \n' <"$work/out" | grep -q '"contact_laws":\["hooke","mindlin"\]' || fail "contact laws not named"
+    overlap=$(grep '"fill_max_overlap_r"' "$work/out" | sed 's/.*: *//; s/,//')
+    awk -v o="$overlap" 'BEGIN { exit !(o > 0 && o < 0.05) }' || fail "overlap $overlap of R"
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/hooke.toml" --out "$work/deck"
+    grep -q '^pair_style gran model hooke tangential history rolling_friction epsd3' "$work/deck/in.slump" || fail "no model hooke"
+    grep -q 'wall/gran model hooke tangential history' "$work/deck/in.slump" || fail "walls not hooke"
+    grep -q 'property/global characteristicVelocity scalar 0.3' "$work/deck/in.slump" || fail "no characteristic velocity"
+    grep -q "^# linear spring-dashpot normal contact (Hooke): LIGGGHTS' model hooke derives k_n" "$work/deck/in.slump" || fail "no note" ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"

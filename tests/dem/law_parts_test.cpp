@@ -16,7 +16,9 @@
 #include "report/scene_table.hpp"
 #include "similarity/quantity_catalogue.hpp"
 #include "slump/coarse_grain.hpp"
+#include "slump/compiled_engines.hpp"
 #include "slump/run_cache.hpp"
+#include "slump/scene_text.hpp"
 #include "slump/slump_run.hpp"
 #include "slump/slump_scene.hpp"
 
@@ -49,7 +51,7 @@ TEST_CASE("Every law parameter: default inside its range and equal to the settin
             p.set(s, x);
             CHECK(p.get(s) == Approx(x).epsilon(1e-14));
         }
-    CHECK(keys.size() == 13);
+    CHECK(keys.size() == 14);
 }
 
 TEST_CASE("Law parameters carry the similarity catalogue's dimensions", "[dem][parameters][similarity]") {
@@ -98,24 +100,25 @@ TEST_CASE("Coarse-graining follows each table's rule: gamma S_f^k, E and mu by t
 }
 
 TEST_CASE("A parameter added to a law's table reaches the scene reader, the cache key and the report", "[dem][parameters]") {
-    // A part that declares one parameter, stored where no shipped part looks (the linear law's k).
+    // A part that declares one parameter, stored where no acting part looks (the linear law's k,
+    // which Hertz scenes do not read).
     static constexpr Parameter extra[] = {
-        {"contact.linear_stiffness_n_per_m", "linear spring stiffness k", "N/m", {3, 1, -2}, 100, {0, unbounded},
+        {"contact.test_stiffness_n_per_m", "test spring stiffness k", "N/m", {3, 1, -2}, 100, {0, unbounded},
          Replacement::kept, {}, {}, LiggghtsKind::scalar, [](const ContactSettings& s) { return s.material.linear_stiffness; },
          [](ContactSettings& s, double x) { s.material.linear_stiffness = x; }}};
     static constexpr LawPart part{"test part", extra, [](const ContactSettings&) { return true; }};
     std::vector<LawPart> parts(law_parts().begin(), law_parts().end());
     parts.push_back(part);
 
-    const auto path = write_scene("demscale_extra_parameter.toml", "[contact]\nlinear_stiffness_n_per_m = 1234\n");
+    const auto path = write_scene("demscale_extra_parameter.toml", "[contact]\ntest_stiffness_n_per_m = 1234\n");
     // The reader knows the key only through the table.
-    CHECK_THROWS_WITH(slump::load_slump_scene(path), Catch::Matchers::Contains("linear_stiffness_n_per_m"));
+    CHECK_THROWS_WITH(slump::load_slump_scene(path), Catch::Matchers::Contains("test_stiffness_n_per_m"));
     const auto s = slump::load_slump_scene(path, parts);
     CHECK(s.material.linear_stiffness == 1234);
     CHECK(slump::load_slump_scene(write_scene("demscale_no_extra.toml", "[scene]\n"), parts).material.linear_stiffness == 100);
-    CHECK_THROWS_WITH(slump::load_slump_scene(write_scene("demscale_bad_extra.toml", "[contact]\nlinear_stiffness_n_per_m = -1\n"),
+    CHECK_THROWS_WITH(slump::load_slump_scene(write_scene("demscale_bad_extra.toml", "[contact]\ntest_stiffness_n_per_m = -1\n"),
                                               parts),
-                      Catch::Matchers::Contains("linear_stiffness_n_per_m = -1: accepted a finite number > 0 N/m"));
+                      Catch::Matchers::Contains("test_stiffness_n_per_m = -1: accepted a finite number > 0 N/m"));
     // The cache key follows its value.
     auto t = s;
     CHECK(slump::scene_key(s, parts) == slump::scene_key(t, parts));
@@ -126,7 +129,7 @@ TEST_CASE("A parameter added to a law's table reaches the scene reader, the cach
     const auto table = report::scene_table(s, "test", parts);
     bool listed = false;
     for (const auto& row : table.rows)
-        if (std::get<std::string>(row[0]) == "linear spring stiffness k")
+        if (std::get<std::string>(row[0]) == "test spring stiffness k")
             listed = std::get<double>(row[1]) == 1234 && std::get<std::string>(row[2]) == "N/m";
     CHECK(listed);
 }
@@ -201,7 +204,7 @@ TEST_CASE("Every law a scene chooses declares its slot, choice, builder, deck wo
                 CHECK(slump::scene_key(s) != slump::scene_key(t));
             }
     }
-    CHECK(chosen == 4);
+    CHECK(chosen == 5);
     // Its builder: every registered normal law is built from the settings (a compile error
     // otherwise), declares the normal slot, and pushes apart at an overlap.
     [&]<class... Law>(std::tuple<Law...>*) {
@@ -214,4 +217,45 @@ TEST_CASE("Every law a scene chooses declares its slot, choice, builder, deck wo
         };
         (check.template operator()<Law>(), ...);
     }(static_cast<normal_laws*>(nullptr));
+}
+
+TEST_CASE("A scene chooses the linear normal law: read, built, keyed, limited, refused and scaled", "[dem][parameters][engines]") {
+    const auto path = write_scene("demscale_hooke.toml",
+                                  "[contact]\nnormal_law = \"hooke\"\nlinear_stiffness_n_per_m = 300\nrestitution = 0.6\n[liquid]\nwet = false\n");
+    const auto s = slump::load_slump_scene(path);
+    CHECK(s.normal_law == "hooke");
+    CHECK(hooke_part.active(s));
+    CHECK_FALSE(hertz_part.active(s));
+    // Built from the scene: F = k δ and F_d = 2β √(k m*) v_n with β = ln e / √(ln² e + π²), by hand.
+    const auto law = build_contact_law<ContactLaw<NormalLinear, TangentialMindlin>>(s, s.radius_m);
+    ContactPair c;
+    c.overlap = 2e-6, c.m_eff = 4e-6, c.v_normal = -0.1;
+    CHECK(law.normal.elastic_force(c) == Approx(300 * 2e-6).epsilon(1e-15));
+    const double beta = std::log(0.6) / std::sqrt(std::log(0.6) * std::log(0.6) + std::numbers::pi * std::numbers::pi);
+    CHECK(law.normal.damping_force(c) == Approx(2 * beta * std::sqrt(300 * 4e-6) * -0.1).epsilon(1e-14));
+    // Its engine: the dry epsd line; none with the ledger, refused naming the list.
+    CHECK(slump::listed_engine(s, false).normal == &hooke_part);
+    CHECK_THROWS_AS(slump::listed_engine(s, true), InputError);
+    // The step: the Rayleigh limit of E and ν, and t_c / 20 with t_c = π √(m*/k), m* = m/2.
+    const double m = s.material.density * 4.0 / 3.0 * std::numbers::pi * std::pow(s.radius_m, 3);
+    const auto limits = time_step_limits(s, s.radius_m);
+    REQUIRE(limits.size() == 2);
+    CHECK(limits[0].seconds == Approx(rayleigh_time(s.material, s.radius_m)).epsilon(1e-15));
+    CHECK(limits[1].seconds == Approx(std::numbers::pi * std::sqrt(m / 2 / 300)).epsilon(1e-14));
+    CHECK(limits[1].fraction == 0.05);
+    // The cache key: its own line, and k is an input only where the law acts.
+    auto hertz = s;
+    hertz.normal_law = "hertz";
+    CHECK(slump::scene_key(s) != slump::scene_key(hertz));
+    CHECK(slump::scene_text(s).find("\nlaw_hooke=1\n") != std::string::npos);
+    CHECK(slump::scene_text(s).find("\ncontact.linear_stiffness_n_per_m=300\n") != std::string::npos);
+    CHECK(slump::scene_text(hertz).find("linear_stiffness") == std::string::npos);
+    // A value that names no law is refused with the list.
+    CHECK_THROWS_WITH(slump::load_slump_scene(write_scene("demscale_hook.toml", "[contact]\nnormal_law = \"hook\"\n")),
+                      Catch::Matchers::Contains("contact.normal_law = \"hook\": accepted one of \"hertz\", \"hooke\""));
+    // Under S_f: k ∝ ρ L³ T⁻² takes S_f^k when named (S_f¹ at k = 1, where stresses are kept), else kept.
+    for (double k : {1.0, 2.0}) {
+        CHECK(slump::coarse_grained(s, {2, k, {"linear_stiffness"}}).material.linear_stiffness == Approx(300 * std::pow(2, k)).epsilon(1e-13));
+        CHECK(slump::coarse_grained(s, {2, k, {}}).material.linear_stiffness == 300);
+    }
 }
