@@ -38,7 +38,8 @@ template <const LawPart* Part, class List>
 struct law_of;
 template <const LawPart* Part, class First, class... Rest>
 struct law_of<Part, std::tuple<First, Rest...>> {
-    using type = std::conditional_t<First::part == Part, typename First::law, typename law_of<Part, std::tuple<Rest...>>::type>;
+    // By choice value: GCC does not fold the comparison of two objects' addresses under AddressSanitizer.
+    using type = std::conditional_t<First::part->choice == Part->choice, typename First::law, typename law_of<Part, std::tuple<Rest...>>::type>;
 };
 template <const LawPart* Part>
 struct law_of<Part, std::tuple<>> {

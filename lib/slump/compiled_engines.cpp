@@ -1,6 +1,7 @@
 #include "slump/compiled_engines.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/input_error.hpp"
 
@@ -14,7 +15,8 @@ CohesionChoice cohesion_choice(const SlumpScene& s) {
 const dem::LawPart* normal_choice(const SlumpScene& s) {
     return [&]<class... Law>(std::tuple<Law...>*) {
         const dem::LawPart* chosen = nullptr;
-        ((chosen = !chosen && Law::part->active(s) ? Law::part : chosen), ...);
+        ((chosen = chosen == nullptr && Law::part->active(s) ? Law::part : chosen), ...);
+        if (chosen == nullptr) throw std::logic_error("no registered normal law is \"" + std::string(s.normal_law) + "\"");
         return chosen;
     }(static_cast<dem::normal_laws*>(nullptr));
 }
@@ -25,7 +27,7 @@ RollingEngine rolling_engine(const SlumpScene& s) {
 }
 
 std::string engine_name(const EngineLine& line, const SlumpScene* s) {
-    std::string name = std::string(line.normal ? line.normal->name : "no normal law") + ", ";
+    std::string name = std::string(line.normal->name) + ", ";
     name += line.cohesion == CohesionChoice::liquid_bridge ? "liquid bridge"
             : line.cohesion == CohesionChoice::sjkr        ? "SJKR adhesion"
                                                            : "no cohesion";

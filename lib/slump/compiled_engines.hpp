@@ -26,7 +26,11 @@ struct EngineLine {
     CohesionChoice cohesion;
     RollingEngine rolling;
     bool ledger;  // the energy ledger books every loss
-    friend constexpr bool operator==(const EngineLine&, const EngineLine&) = default;
+    // The normal laws by their choice values (never null): a constant expression under
+    // AddressSanitizer too, where GCC folds no comparison of an object's address.
+    friend constexpr bool operator==(const EngineLine& a, const EngineLine& b) {
+        return a.normal->choice == b.normal->choice && a.cohesion == b.cohesion && a.rolling == b.rolling && a.ledger == b.ledger;
+    }
 };
 
 inline constexpr EngineLine compiled_engines[] = {
@@ -56,7 +60,7 @@ CohesionChoice cohesion_choice(const SlumpScene& s);
 // The rolling engine a scene chooses.
 RollingEngine rolling_engine(const SlumpScene& s);
 
-// The registered normal law the scene chooses (contact.normal_law).
+// The registered normal law the scene chooses (contact.normal_law); std::logic_error if none is.
 const dem::LawPart* normal_choice(const SlumpScene& s);
 
 // "Hertz normal contact, liquid bridge, epsd rolling, energy ledger": a line for people (with the scene: its run-time rolling law).
