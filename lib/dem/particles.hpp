@@ -63,4 +63,16 @@ struct Particles {
     }
 };
 
+// Momenta about the origin: Σ m v and Σ (x × m v + I ω).
+inline Vec3 linear_momentum(const Particles& p) {
+    Vec3 m = Vec3::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i) m += p.mass[i] * p.velocity[i];
+    return m;
+}
+inline Vec3 angular_momentum(const Particles& p) {
+    Vec3 l = Vec3::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i) l += p.position[i].cross(p.mass[i] * p.velocity[i]) + p.inertia[i] * p.angular_velocity[i];
+    return l;
+}
+
 }  // namespace demscale::dem

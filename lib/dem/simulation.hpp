@@ -1,14 +1,15 @@
 // The DEM engine for one contact law: particles, walls, gravity, velocity-Verlet integration
 // (translation and rotation), the rebuild trigger of the Verlet neighbour list, and the checks
 // that stop a run at the first non-finite number. The parts own their state: PairContacts (pairs,
-// their history, the threaded gather), WallContacts, EnergyLedger; contact geometry is free
+// their history, the threaded gather), WallContacts, EnergyLedger, SphereOrder (the spheres' order
+// against the input's), ThreadGovernor (the threads of a step); contact geometry is free
 // functions (contact_geometry.hpp); checkpoints use one format (checkpoint.hpp). A step runs two
 // parallel regions: the half kick with the drift, and the forces with the closing half kick
 // (compute_forces). Trajectories are bit-identical for any thread count (the energy ledger's sums,
 // per share of the work, for any thread count that runs the steps of a run given the same
-// threads). A large scene's spheres are reordered cell by cell now and then (spatial_order.hpp):
+// threads). A large scene's spheres are reordered cell by cell now and then (sphere_order.hpp):
 // particles() is then in that order, input_index() names each sphere's place in the input, and
-// in_input_order() gives the state as it was ordered. SI units.
+// in_input_order() gives the state as it was ordered. Momenta: particles.hpp. SI units.
 #pragma once
 
 #include <algorithm>
@@ -16,7 +17,6 @@
 #include <cmath>
 #include <cstdint>
 #include <istream>
-#include <numeric>
 #include <omp.h>
 #include <optional>
 #include <ostream>
@@ -33,6 +33,7 @@
 #include "dem/thread_governor.hpp"
 #include "dem/pair_contacts.hpp"
 #include "dem/spatial_order.hpp"
+#include "dem/sphere_order.hpp"
 #include "dem/wall_contacts.hpp"
 #include "dem/walls.hpp"
 
@@ -46,10 +47,9 @@ public:
     Simulation(Particles particles, Law law, std::vector<Wall> walls, Vec3 gravity, double dt, double skin,
                SpatialSort sort = {})
         : p_(std::move(particles)), law_(std::move(law)), walls_(std::move(walls)), gravity_(gravity), dt_(dt),
-          neighbors_(skin), wall_contacts_(walls_.size(), p_.size()), sort_(sort), input_index_(p_.size()) {
+          neighbors_(skin), wall_contacts_(walls_.size(), p_.size()), order_(p_.size(), sort) {
         require_positive(dt, "dt");
         require_positive(skin, "skin");
-        std::iota(input_index_.begin(), input_index_.end(), 0u);
         index_particles();
         rebuild();
         compute_forces();
@@ -79,7 +79,7 @@ public:
         if (!std::isfinite(drifted.sum))
             for (std::size_t i = 0; i < p_.size(); ++i)
                 if (!p_.position[i].allFinite()) throw std::runtime_error(non_finite_report(i, "position of"));
-        if (sort_due() || !built || neighbors_.needs_rebuild(drifted.shifts)) rebuild();
+        if (order_.due(p_.size(), steps_) || !built || neighbors_.needs_rebuild(drifted.shifts)) rebuild();
         compute_forces(AfterForces::half_kick);
         time_ += dt_;
         ++steps_;
@@ -94,16 +94,10 @@ public:
     const Particles& particles() const { return p_; }
     Particles& particles() { return p_; }  // to move particles or set velocities; masses stay as built
     // Where each sphere stood in the input: particles()[k] is the input's sphere input_index()[k].
-    const std::vector<std::uint32_t>& input_index() const { return input_index_; }
+    const std::vector<std::uint32_t>& input_index() const { return order_.input_index(); }
     // The state now, in the input's order (a copy).
-    Particles in_input_order() const {
-        std::vector<std::uint32_t> slot(p_.size());
-        for (std::uint32_t k = 0; k < slot.size(); ++k) slot[input_index_[k]] = k;
-        Particles copy = p_;
-        copy.reorder(slot);
-        return copy;
-    }
-    std::size_t spatial_sorts() const { return sorts_; }
+    Particles in_input_order() const { return order_.in_input_order(p_); }
+    std::size_t spatial_sorts() const { return order_.sorts(); }
     std::vector<Wall>& walls() { return walls_; }  // e.g. to schedule the cone's lift
 
     // Takes a wall out of the scene (the slump cone after its lift), with its contact history.
@@ -148,7 +142,7 @@ public:
         w.array(p_.position), w.array(p_.velocity), w.array(p_.angular_velocity), w.array(p_.force), w.array(p_.torque);
         w.array(p_.radius), w.array(p_.mass), w.array(p_.inertia), w.array(p_.species), w.array(p_.fixed);
         w.value(time_), w.value(steps_), ledger_.write(w);
-        w.array(input_index_), w.value(sorts_), w.value(sorted_at_);
+        order_.write(w);
         w.value(neighbors_.builds());
         w.array(neighbors_.built_at());
         pair_contacts_.write(w);
@@ -167,7 +161,7 @@ public:
         r.array(p_.position), r.array(p_.velocity), r.array(p_.angular_velocity), r.array(p_.force), r.array(p_.torque);
         r.array(p_.radius), r.array(p_.mass), r.array(p_.inertia), r.array(p_.species), r.array(p_.fixed);
         r.value(time_), r.value(steps_), ledger_.read(r);
-        r.array(input_index_), r.value(sorts_), r.value(sorted_at_);
+        order_.read(r);
         std::size_t builds = 0;
         r.value(builds);
         std::vector<Vec3> built_at;
@@ -176,19 +170,6 @@ public:
         neighbors_.restore(std::move(built_at), std::move(listed), builds);
         wall_contacts_.read(r, p_.size());
         index_particles();
-    }
-
-    // Momenta about the origin: Σ m v and Σ (x × m v + I ω).
-    Vec3 linear_momentum() const {
-        Vec3 m = Vec3::Zero();
-        for (std::size_t i = 0; i < p_.size(); ++i) m += p_.mass[i] * p_.velocity[i];
-        return m;
-    }
-    Vec3 angular_momentum() const {
-        Vec3 l = Vec3::Zero();
-        for (std::size_t i = 0; i < p_.size(); ++i)
-            l += p_.position[i].cross(p_.mass[i] * p_.velocity[i]) + p_.inertia[i] * p_.angular_velocity[i];
-        return l;
     }
 
 private:
@@ -293,16 +274,9 @@ private:
         return out[0];
     }
 
-    // A reorder is due at the first build and every sort_.every_steps steps after it, at those
-    // steps exactly (a rebuild is forced then): the order, hence each sphere's pair order, is then
-    // the same whatever the skin, which only decides when the list is rebuilt in between.
-    bool sort_due() const {
-        return p_.size() > 1 && p_.size() >= sort_.min_particles && (sorts_ == 0 || steps_ - sorted_at_ >= sort_.every_steps);
-    }
-
     void rebuild() {
-        if (sort_due()) reorder_spatially();
-        neighbors_.build(p_, &input_index_);  // pairs oriented by input order: a reorder flips none
+        if (order_.due(p_.size(), steps_)) reorder_spatially();
+        neighbors_.build(p_, &order_.input_index());  // pairs oriented by input order: a reorder flips none
         pair_contacts_.merge(neighbors_.pairs(), p_, law_);
     }
 
@@ -314,10 +288,7 @@ private:
         const int axis = longest_side(p_);  // the slabs' axis (over_spheres)
         const std::vector<std::uint32_t> order = spatial_order(p_, 2 * r_max, axis);
         pair_contacts_.cut_slabs_along(axis);
-        ++sorts_, sorted_at_ = steps_;
-        std::vector<std::uint32_t> new_index(order.size()), input(order.size());
-        for (std::uint32_t k = 0; k < order.size(); ++k) new_index[order[k]] = k, input[k] = input_index_[order[k]];
-        input_index_ = std::move(input);
+        const std::vector<std::uint32_t> new_index = order_.take(order, steps_);
         p_.reorder(order);
         wall_contacts_.reorder(order);
         index_particles();
@@ -390,7 +361,7 @@ private:
             ledger_.add(part, t.pairs), ledger_.add(part, t.walls, t.wall_power);
         }
         if (const auto& escape = wall_contacts_.escape())
-            throw std::runtime_error("particle " + std::to_string(input_index_[escape->particle]) + " left the domain through wall " +
+            throw std::runtime_error("particle " + std::to_string(order_.input_index()[escape->particle]) + " left the domain through wall " +
                                      std::to_string(escape->wall) + " at step " + std::to_string(steps_));
         ledger_.end_step(dt_);
         if (!forces_sound(run_parts))  // find it (a sum of huge finite values may overflow: then none is found)
@@ -410,11 +381,11 @@ private:
     // Why particle i got a non-finite force, torque or position ("what": "force on", "position of"):
     // its own state, or the first contact (in pair order, then walls) whose contribution is not finite.
     std::string non_finite_report(std::size_t i, const std::string& what) const {
-        const std::string why = "non-finite " + what + " particle " + std::to_string(input_index_[i]) + " at step " + std::to_string(steps_) +
+        const std::string why = "non-finite " + what + " particle " + std::to_string(order_.input_index()[i]) + " at step " + std::to_string(steps_) +
                                 " (t = " + std::to_string(time_) + " s)";
         if (!p_.velocity[i].allFinite() || !p_.angular_velocity[i].allFinite()) return why + ": its velocity is not finite";
         if (!p_.position[i].allFinite()) return why + ": its position is not finite";
-        if (const auto pair = pair_contacts_.non_finite_contact(i, p_, law_, dt_, input_index_)) return why + *pair;
+        if (const auto pair = pair_contacts_.non_finite_contact(i, p_, law_, dt_, order_.input_index())) return why + *pair;
         if (const auto wall = wall_contacts_.contact_report(i, p_, law_, walls_, time_, dt_)) return why + *wall;
         return why;
     }
@@ -442,9 +413,7 @@ private:
     std::vector<std::size_t> equal_runs_;  // sphere_runs() before the pairs are shared
     double time_ = 0;
     std::size_t steps_ = 0;
-    SpatialSort sort_;
-    std::vector<std::uint32_t> input_index_;  // each sphere's place in the input
-    std::size_t sorts_ = 0, sorted_at_ = 0;   // reorders so far; the step of the last
+    SphereOrder order_;  // the spheres' order against the input's, and when to reorder them
     // The threads the run was given (OpenMP's count at construction): the contact loops cut their
     // work into this many shares whatever number of threads the governor runs a step on, so the
     // ledger's sums, per share, are the same bits on one thread or all of them.
