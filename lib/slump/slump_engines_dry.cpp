@@ -8,3 +8,8 @@ template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const EngineL
                                          const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol
+
+// The engines the tests share (slump/shared_engines.hpp), compiled here once.
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::dry_epsd>, demscale::slump::shared::dry_epsd.ledger>;
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::dry_epsd_ledger>, demscale::slump::shared::dry_epsd_ledger.ledger>;
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::bare_ledger>, demscale::slump::shared::bare_ledger.ledger>;

@@ -8,3 +8,6 @@ template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineL
                                          const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol
+
+// The engines the tests share (slump/shared_engines.hpp), compiled here once.
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::sjkr_epsd_ledger>, demscale::slump::shared::sjkr_epsd_ledger.ledger>;

@@ -8,3 +8,7 @@ template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const
                                          const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 
 }  // namespace demscale::slump::protocol
+
+// The engines the tests share (slump/shared_engines.hpp), compiled here once.
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::wet_epsd>, demscale::slump::shared::wet_epsd.ledger>;
+template class demscale::dem::Simulation<demscale::slump::EngineLaw<demscale::slump::shared::wet_epsd_ledger>, demscale::slump::shared::wet_epsd_ledger.ledger>;

@@ -30,6 +30,7 @@
 #include "slump/motion.hpp"
 #include "slump/pour.hpp"
 #include "slump/run_cache.hpp"
+#include "slump/engine_law.hpp"
 #include "slump/slump_run.hpp"
 
 namespace demscale::slump::protocol {
@@ -253,11 +254,9 @@ inline constexpr CohesionChoice cohesion_of = std::is_same_v<Cohesion, CohesionL
 template <EngineLine Line, class Cohesion>
 SlumpResult run_line(const SlumpScene& s, Particles particles, bool pour, const std::function<void(const SlumpProgress&)>& progress,
                      const SlumpPhases& phases) {
-    using Normal = typename law_of<Line.normal, normal_laws>::type;
-    static_assert(!std::is_void_v<Normal>, "an engine line names a normal law registered in dem::normal_laws");
-    using Rolling = std::conditional_t<Line.rolling == RollingEngine::none, RollingNone,
-                                       std::conditional_t<Line.rolling == RollingEngine::epsd, RollingEpsd, RollingChosen>>;
-    using Law = ContactLaw<Normal, TangentialMindlin, Cohesion, Rolling>;
+    static_assert(!std::is_void_v<typename law_of<Line.normal, normal_laws>::type>, "an engine line names a normal law registered in dem::normal_laws");
+    using Law = EngineLaw<Line>;
+    static_assert(std::is_same_v<decltype(Law::cohesion), Cohesion>, "the line is of this file's cohesion law");
     Law law = build_contact_law<Law>(s, s.radius_m, s.source);
     ProtocolState st;
     if (pour) {  // its wall time counts in the run's

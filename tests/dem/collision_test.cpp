@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "dem/simulation.hpp"
+#include "slump/shared_engines.hpp"  // the library's copies of the engines it shares
 #include "dem/time_step.hpp"
 
 using namespace demscale::dem;

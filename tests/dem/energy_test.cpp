@@ -8,6 +8,7 @@
 #include "bridge/mikami.hpp"
 #include "dem/laws/adhesion_sjkr.hpp"
 #include "dem/simulation.hpp"
+#include "slump/shared_engines.hpp"  // the library's copies of the engines it shares
 
 using namespace demscale;
 using namespace demscale::dem;

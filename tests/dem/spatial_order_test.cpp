@@ -11,6 +11,7 @@
 
 #include "bridge/mikami.hpp"
 #include "dem/simulation.hpp"
+#include "slump/shared_engines.hpp"  // the library's copies of the engines it shares
 
 using namespace demscale;
 using namespace demscale::dem;

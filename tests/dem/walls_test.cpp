@@ -4,6 +4,7 @@
 #include <random>
 
 #include "dem/simulation.hpp"
+#include "slump/shared_engines.hpp"  // the library's copies of the engines it shares
 
 using namespace demscale::dem;
 
