@@ -76,6 +76,15 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
     };
 }
 
+// The laws the scene chose, by their parts' choice values (dem/law_parts.hpp), and its bridge curves.
+void add_laws(nlohmann::ordered_json& j, const slump::SlumpScene& scene) {
+    j["contact_laws"] = nlohmann::ordered_json::array();
+    for (const auto& part : dem::law_parts())
+        if (!part.choice.empty() && part.active(scene)) j["contact_laws"].push_back(std::string(part.choice));
+    j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
+    j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
+}
+
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     use_threads(o.threads);
@@ -122,12 +131,7 @@ int run_slump_command(const Options& o) {
     // The thread governor's choice over the lift and spread (0 and 0 on one thread).
     j["thread_windows"] = {{"all_threads", r.windows_all_threads}, {"one_thread", r.windows_one_thread}};
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
-    // The laws the scene chose, by their parts' choice values (dem/law_parts.hpp).
-    j["contact_laws"] = nlohmann::ordered_json::array();
-    for (const auto& part : dem::law_parts())
-        if (!part.choice.empty() && part.active(scene)) j["contact_laws"].push_back(std::string(part.choice));
-    j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
-    j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
+    add_laws(j, scene);
     j["pour_time_s"] = r.pour_time;
     j["fill_mass_g"] = r.fill.mass * 1e3;
     j["fill_mass_target_g"] = slump::fill_mass(scene) * 1e3;
