@@ -12,6 +12,7 @@
 #include "core/idle_cores.hpp"
 #include "core/input_error.hpp"
 #include "io/bridge_table_file.hpp"
+#include "slump/compiled_engines.hpp"
 #include "slump/size_sweep.hpp"
 #include "slump/slump_run.hpp"
 #include <omp.h>
@@ -84,11 +85,7 @@ int run_dem_bench(const Options& o) {
             if (cohesion == Cohesion::dry) dry_rate[n] = rate;
             if (cohesion == Cohesion::mikami) mikami_rate[n] = rate;
             const std::string dashpot = combinations[n].rolling_damping > 0 ? " dashpot eta_r=" + format_number(combinations[n].rolling_damping) : "";
-            const char* laws = cohesion == Cohesion::mikami  ? "hertz+mindlin+mikami"
-                               : cohesion == Cohesion::exact ? "hertz+mindlin+exact-table"
-                               : cohesion == Cohesion::sjkr  ? "hertz+mindlin+sjkr"
-                                                             : "hertz+mindlin";
-            t.rows.push_back({std::string(laws) + rolling + dashpot + (combinations[n].ledger ? " +energy ledger" : ""),
+            t.rows.push_back({slump::laws_label(s) + rolling + dashpot + (combinations[n].ledger ? " +energy ledger" : ""),
                               double(r.particles), double(r.steps), r.wall_s, rate, dry_rate[n] / rate, dry_rate[0] / rate,
                               wet ? io::Cell(mikami_rate[n] / rate) : io::Cell(std::string("-"))});
         }
@@ -127,7 +124,7 @@ int run_size_sweep(const Options& o) {
                 const bool timed = point.particle_steps_per_s > 0 && smallest > 0;  // else the set-up's noise exceeded the steps
                 const bool per_contact = timed && point.contact_steps_per_s > 0 && smallest_per_contact > 0;  // 0: no contacts
                 const io::Cell untimed(std::string("- (more --steps)")), none(std::string("-"));
-                t.rows.push_back({wet ? "hertz+mindlin+mikami" : "hertz+mindlin", shuffled ? "shuffled" : "lattice", double(point.particles),
+                t.rows.push_back({slump::laws_label(s), shuffled ? "shuffled" : "lattice", double(point.particles),
                                   double(point.steps), point.wall_s, timed ? io::Cell(point.particle_steps_per_s) : untimed,
                                   timed ? io::Cell(point.particle_steps_per_s / smallest) : untimed, point.contacts_per_particle,
                                   per_contact ? io::Cell(point.contact_steps_per_s) : none,

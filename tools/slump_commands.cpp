@@ -79,8 +79,7 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
 // The laws the scene chose, by their parts' choice values (dem/law_parts.hpp), and its bridge curves.
 void add_laws(nlohmann::ordered_json& j, const slump::SlumpScene& scene) {
     j["contact_laws"] = nlohmann::ordered_json::array();
-    for (const auto& part : dem::law_parts())
-        if (!part.choice.empty() && part.active(scene)) j["contact_laws"].push_back(std::string(part.choice));
+    for (const auto law : dem::chosen_laws(scene)) j["contact_laws"].push_back(std::string(law));
     j["bridge_law"] = scene.wet ? slump::bridge_variant_name(scene) : "none";  // liquid.bridge_variant
     j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
 }

@@ -2,6 +2,13 @@
 
 namespace demscale::dem {
 
+std::vector<std::string_view> chosen_laws(const ContactSettings& s, std::span<const LawPart> parts) {
+    std::vector<std::string_view> chosen;
+    for (const auto& part : parts)
+        if (!part.choice.empty() && part.active(s)) chosen.push_back(part.choice);
+    return chosen;
+}
+
 std::vector<TimeScale> time_step_limits(const ContactSettings& s, double radius_m, std::span<const LawPart> parts) {
     std::vector<TimeScale> limits;
     for (const auto& part : parts)

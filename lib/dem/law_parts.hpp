@@ -64,6 +64,10 @@ inline const LawPart& default_part(Slot slot, std::span<const LawPart> parts = l
     return parts.front();  // unreachable for a slot with a registered law
 }
 
+// The choice values of the chosen laws that act in these settings, in the list's order
+// ("hertz", "mindlin", "liquid_bridge"): the JSON's contact_laws, the bench's rows.
+std::vector<std::string_view> chosen_laws(const ContactSettings& s, std::span<const LawPart> parts = law_parts());
+
 // The time scales that limit a stable step of these settings, for particles of this radius (m).
 std::vector<TimeScale> time_step_limits(const ContactSettings& s, double radius_m, std::span<const LawPart> parts = law_parts());
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/input_error.hpp"
+#include "dem/bridge_law.hpp"
 
 namespace demscale::slump {
 
@@ -36,6 +37,12 @@ std::string engine_name(const EngineLine& line, const SlumpScene* s) {
     else if (s) name += s->rolling_model == RollingModel::epsd2 ? ", epsd2 rolling" : ", constant_torque rolling";
     else name += ", epsd2 or constant_torque rolling";
     return name + (line.ledger ? ", energy ledger" : "");
+}
+
+std::string laws_label(const SlumpScene& s) {
+    std::string label;
+    for (const auto law : dem::chosen_laws(s)) label += (label.empty() ? "" : "+") + std::string(law);
+    return s.wet ? label + "(" + std::string(dem::particle_curve_source(s).value) + ")" : label;
 }
 
 EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list) {

@@ -66,6 +66,10 @@ const dem::LawPart* normal_choice(const SlumpScene& s);
 // "Hertz normal contact, liquid bridge, epsd rolling, energy ledger": a line for people (with the scene: its run-time rolling law).
 std::string engine_name(const EngineLine& line, const SlumpScene* s = nullptr);
 
+// "hertz+mindlin+liquid_bridge(mikami1998)": the chosen laws that act (dem::chosen_laws), the
+// bridge's curve source in brackets; the bench's rows.
+std::string laws_label(const SlumpScene& s);
+
 // The line that runs this scene (with the ledger or not); an InputError naming the scene's choice
 // and every line of `list` when none matches.
 EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list = compiled_engines);

@@ -225,7 +225,8 @@ case $case_name in
     # The size sweep's table: dry and wet, lattice order and shuffled, for each size; bad sizes refused.
     expect 0 '^laws,order,particles,steps,wall_s,particle_steps_per_s,rate_vs_smallest,contacts_per_particle,contact_steps_per_s,contact_rate_vs_smallest,peak_bytes_per_particle$' -- \
       "$demscale" bench --dem --sizes 300,600 --steps 10 --timed 1 --format csv
-    [ "$(grep -c '^hertz+mindlin\(+mikami\)\?,\(lattice\|shuffled\),' "$work/out")" -eq 8 ] || { cat "$work/out" >&2; fail "not 8 rows"; }
+    # Each row names its laws from the parts that acted (dry, then the scene's bridge with its curve).
+    [ "$(grep -c '^hertz+mindlin\(+liquid_bridge(mikami1998)\)\?,\(lattice\|shuffled\),' "$work/out")" -eq 8 ] || { cat "$work/out" >&2; fail "not 8 rows"; }
     grep -qi 'nan\|inf' "$work/out" && fail "NaN or inf in the sweep"
     expect 2 '--sizes = 300: accepted with --dem' -- "$demscale" bench --sizes 300
     expect 2 '--sizes = "5e7".*\(99, 2e\+07\)' -- "$demscale" bench --dem --sizes 5e7
