@@ -125,7 +125,8 @@ int run_size_sweep(const Options& o) {
                 const bool per_contact = timed && point.contact_steps_per_s > 0 && smallest_per_contact > 0;  // 0: no contacts
                 const io::Cell untimed(std::string("- (more --steps)")), none(std::string("-"));
                 t.rows.push_back({slump::laws_label(s), shuffled ? "shuffled" : "lattice", double(point.particles),
-                                  double(point.steps), point.wall_s, timed ? io::Cell(point.particle_steps_per_s) : untimed,
+                                  double(point.steps), timed ? io::Cell(point.wall_s) : untimed,
+                                  timed ? io::Cell(point.particle_steps_per_s) : untimed,
                                   timed ? io::Cell(point.particle_steps_per_s / smallest) : untimed, point.contacts_per_particle,
                                   per_contact ? io::Cell(point.contact_steps_per_s) : none,
                                   per_contact ? io::Cell(point.contact_steps_per_s / smallest_per_contact) : none,

@@ -228,6 +228,8 @@ case $case_name in
     # Each row names its laws from the parts that acted (dry, then the scene's bridge with its curve).
     [ "$(grep -c '^hertz+mindlin\(+liquid_bridge(mikami1998)\)\?,\(lattice\|shuffled\),' "$work/out")" -eq 8 ] || { cat "$work/out" >&2; fail "not 8 rows"; }
     grep -qi 'nan\|inf' "$work/out" && fail "NaN or inf in the sweep"
+    # A time below the noise (the difference of two runs) is not printed as a negative wall time.
+    awk -F, '/^hertz/ && $5 + 0 < 0 { bad = 1 } END { exit bad }' "$work/out" || fail "negative wall_s"
     expect 2 '--sizes = 300: accepted with --dem' -- "$demscale" bench --sizes 300
     expect 2 '--sizes = "5e7".*\(99, 2e\+07\)' -- "$demscale" bench --dem --sizes 5e7
     expect 2 '--steps = 5: accepted 10 to 100000' -- "$demscale" bench --dem --sizes 300 --steps 5
