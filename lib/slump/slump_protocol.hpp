@@ -21,7 +21,6 @@
 #include "dem/contact_law.hpp"
 #include "dem/law_builder.hpp"
 #include "dem/law_parts.hpp"
-#include "dem/laws/adhesion_sjkr.hpp"
 #include "dem/simulation.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
@@ -244,11 +243,6 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     return res;
 }
 
-template <class Cohesion>
-inline constexpr CohesionChoice cohesion_of = std::is_same_v<Cohesion, CohesionLiquidBridge> ? CohesionChoice::liquid_bridge
-                                               : std::is_same_v<Cohesion, CohesionSjkr>      ? CohesionChoice::sjkr
-                                                                                               : CohesionChoice::none;
-
 // The engine of one line of the list (slump/compiled_engines.hpp): its contact law (built by
 // dem/law_builder.hpp), the pour (without the ledger) when asked, then the protocol.
 template <EngineLine Line, class Cohesion>
@@ -256,7 +250,6 @@ SlumpResult run_line(const SlumpScene& s, Particles particles, bool pour, const 
                      const SlumpPhases& phases) {
     static_assert(!std::is_void_v<typename law_of<Line.normal, normal_laws>::type>, "an engine line names a normal law registered in dem::normal_laws");
     using Law = EngineLaw<Line>;
-    static_assert(std::is_same_v<decltype(Law::cohesion), Cohesion>, "the line is of this file's cohesion law");
     Law law = build_contact_law<Law>(s, s.radius_m, s.source);
     ProtocolState st;
     if (pour) {  // its wall time counts in the run's
@@ -277,7 +270,7 @@ SlumpResult run_protocol(const SlumpScene& s, const EngineLine& line, Particles 
     bool ran = false;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         auto try_line = [&]<EngineLine Line>() {
-            if constexpr (Line.cohesion == cohesion_of<Cohesion>)
+            if constexpr (std::is_same_v<CohesionLaw<Line.cohesion>, Cohesion>)
                 if (!ran && Line == line) result = run_line<Line, Cohesion>(s, std::move(particles), pour, progress, phases), ran = true;
         };
         (try_line.template operator()<compiled_engines[I]>(), ...);
