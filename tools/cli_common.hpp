@@ -133,7 +133,8 @@ std::function<void(int, int)> progress_printer(const std::string& what);
 std::vector<Command> similarity_commands(CLI::App& app);  // table, curves, regress, scaling
 std::vector<Command> bridge_commands(CLI::App& app);      // bridge, bridge-table, bridge-error
 std::vector<Command> bench_commands(CLI::App& app);       // bench
-std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts, pile
+std::vector<Command> slump_commands(CLI::App& app);       // slump, export liggghts
+std::vector<Command> pile_commands(CLI::App& app);        // pile
 std::vector<Command> study_commands(CLI::App& app);       // check-exponent, sweep
 std::vector<Command> estimate_commands(CLI::App& app);    // estimate-exponent
 std::vector<Command> report_commands(CLI::App& app);      // report

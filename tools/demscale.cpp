@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     for (auto& c : cli::bridge_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::bench_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::slump_commands(app)) commands.push_back(std::move(c));
+    for (auto& c : cli::pile_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::study_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::estimate_commands(app)) commands.push_back(std::move(c));
     for (auto& c : cli::report_commands(app)) commands.push_back(std::move(c));

@@ -1,4 +1,4 @@
-// Subcommands of the slump test: slump (one run of a scene, optionally coarse-grained).
+// Subcommands of the slump test: slump (one run of a scene, optionally coarse-grained) and export liggghts.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -35,7 +35,6 @@ struct Options {
     bool force_dt = false, no_png = false, fixed_time = false, energy = false;
     std::string start;  // settled state to lift from
     std::string resume; // checkpoint of an interrupted run
-    std::string dump;   // LIGGGHTS dump to measure
 };
 
 // --threads: N OpenMP threads; 0: OMP_NUM_THREADS when set, else the cores no other job is using
@@ -203,23 +202,6 @@ int run_export_liggghts(const Options& o) {
     return 0;
 }
 
-// Measures a pile written by another engine (a LIGGGHTS dump) with demscale's own measurements.
-int run_pile(const Options& o) {
-    const auto scene = slump::load_slump_scene(o.scene);  // measures only: no bridge runs
-    const auto p = io::read_liggghts_dump(o.dump, scene.material.density);
-    const auto m = slump::measure_pile(p, scene);
-    nlohmann::ordered_json j;
-    j["particles"] = p.size();
-    j["final_height_mm"] = m.height * 1e3;
-    j["spread_mm"] = m.spread * 1e3;
-    j["final_height_top_mm"] = m.height_top * 1e3;
-    j["spread_d95_mm"] = m.spread_d95 * 1e3;
-    j["spread_max_mm"] = m.spread_max * 1e3;
-    j["repose_angle_deg"] = m.repose_angle_deg ? nlohmann::ordered_json(*m.repose_angle_deg) : nlohmann::ordered_json();
-    std::cout << j.dump(2) << "\n";
-    return 0;
-}
-
 }  // namespace
 
 std::vector<Command> slump_commands(CLI::App& app) {
@@ -254,12 +236,8 @@ std::vector<Command> slump_commands(CLI::App& app) {
     lig->add_option("--threads", o->threads, "OpenMP threads for the settling run (default: the idle cores)");
     exp->require_subcommand(1);
 
-    auto* pile = app.add_subcommand("pile", "measure a pile written by LIGGGHTS (text dump with x y z radius)");
-    pile->add_option("--dump", o->dump, "LIGGGHTS dump file")->required();
-    pile->add_option("--scene", o->scene, "scene the pile came from (for the density)");
     return {{slump, [o] { return run_slump_command(*o); }},
-            {lig, [o] { return run_export_liggghts(*o); }},
-            {pile, [o] { return run_pile(*o); }}};
+            {lig, [o] { return run_export_liggghts(*o); }}};
 }
 
 }  // namespace demscale::cli

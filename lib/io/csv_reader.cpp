@@ -2,6 +2,8 @@
 
 #include "io/input_file.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -60,6 +62,16 @@ CsvData parse_csv(const std::string& text, const std::string& source) {
 
 CsvData read_csv_file(const std::string& path) {
     return parse_csv(read_input_file("input file", path, "a readable CSV file"), path);
+}
+
+std::optional<double> finite_number(std::string_view field) {
+    while (!field.empty() && (field.front() == ' ' || field.front() == '\t')) field.remove_prefix(1);
+    while (!field.empty() && (field.back() == ' ' || field.back() == '\t')) field.remove_suffix(1);
+    if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+    double x = 0;
+    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), x);
+    if (field.empty() || error != std::errc() || end != field.data() + field.size() || !std::isfinite(x)) return std::nullopt;
+    return x;
 }
 
 }  // namespace demscale::io

@@ -2,7 +2,9 @@
 // Quoted fields ("a,b", "say ""x""") are understood.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace demscale::io {
@@ -18,5 +20,9 @@ struct CsvData {
 // field count differs from the header's.
 CsvData parse_csv(const std::string& text, const std::string& source);
 CsvData read_csv_file(const std::string& path);
+
+// A field as a finite number, the whole field read but for spaces around it ("1e-3", " 2" yes;
+// "", "1 mm", "nan", "inf" no).
+std::optional<double> finite_number(std::string_view field);
 
 }  // namespace demscale::io

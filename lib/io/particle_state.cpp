@@ -1,10 +1,7 @@
 #include "io/particle_state.hpp"
 
-#include "io/input_file.hpp"
-
-#include <fstream>
+#include <cmath>
 #include <numbers>
-#include <sstream>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -44,40 +41,6 @@ dem::Particles read_particle_state(const std::string& path) {
         const std::size_t i = p.add({v[0], v[1], v[2]}, v[9], v[10], {v[3], v[4], v[5]});
         p.angular_velocity[i] = {v[6], v[7], v[8]};
     }
-    return p;
-}
-
-dem::Particles read_liggghts_dump(const std::string& path, double density) {
-    std::istringstream in(read_input_file("--dump", path, "a readable LIGGGHTS dump file"));
-    std::string line;
-    std::vector<std::string> columns;
-    dem::Particles p;
-    int n = 0;
-    while (std::getline(in, line)) {
-        ++n;
-        if (line.rfind("ITEM: TIMESTEP", 0) == 0) p = dem::Particles{};  // keep the last snapshot
-        if (line.rfind("ITEM: ATOMS", 0) == 0) {
-            columns.clear();
-            std::istringstream h(line.substr(11));
-            for (std::string c; h >> c;) columns.push_back(c);
-            continue;
-        }
-        if (columns.empty() || line.rfind("ITEM:", 0) == 0) continue;
-        std::istringstream row(line);
-        double x = 0, y = 0, z = 0, r = 0;
-        std::string value;
-        for (const auto& c : columns) {
-            row >> value;
-            const double v = std::strtod(value.c_str(), nullptr);
-            if (c == "x") x = v;
-            else if (c == "y") y = v;
-            else if (c == "z") z = v;
-            else if (c == "radius") r = v;
-        }
-        if (!row || !(r > 0)) throw InputError(path + ":" + std::to_string(n), line, "a row with x y z radius");
-        p.add({x, y, z}, r, density);
-    }
-    if (p.size() == 0) throw InputError(path, "(no atoms)", "an 'ITEM: ATOMS ... x y z radius' section");
     return p;
 }
 

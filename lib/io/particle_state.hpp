@@ -1,6 +1,5 @@
 // A particle state as CSV (SI units: x,y,z,vx,vy,vz,wx,wy,wz,radius,density), to hand a settled
-// fill from one run to another; and the positions of a LIGGGHTS/LAMMPS text dump
-// ("ITEM: ATOMS id type x y z radius ..."), to measure another engine's pile with the same code.
+// fill from one run to another (piles from other engines: io/pile_file.hpp).
 #pragma once
 
 #include <filesystem>
@@ -13,6 +12,5 @@ namespace demscale::io {
 void write_particle_state(const std::filesystem::path& file, const dem::Particles& p);
 // Throws InputError naming file and line for a missing or ill-formed file.
 dem::Particles read_particle_state(const std::string& path);
-dem::Particles read_liggghts_dump(const std::string& path, double density);
 
 }  // namespace demscale::io

@@ -1,10 +1,12 @@
 #include "slump/runs_file.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <tuple>
 
 #include "core/input_error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/csv_reader.hpp"
 #include "io/input_file.hpp"
 #include "slump/ensemble_verdict.hpp"
@@ -62,15 +64,9 @@ std::vector<RunRow> parse_runs(const std::string& text, const std::string& sourc
         auto where = [&](int col) { return line + ":" + std::to_string(col + 1) + " (" + csv.header[static_cast<std::size_t>(col)] + ")"; };
         auto number = [&](int col, double lo, const std::string& accepted) {
             const std::string& f = fields[static_cast<std::size_t>(col)];
-            double x = NAN;
-            std::size_t used = 0;
-            try {
-                x = std::stod(f, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != f.size() || f.empty() || !std::isfinite(x) || x < lo) throw InputError(where(col), f.empty() ? "(empty)" : f, accepted);
-            return x;
+            const auto x = io::finite_number(f);
+            if (!x || *x < lo) throw InputError(where(col), f.empty() ? "(empty)" : f, accepted);
+            return *x;
         };
         RunRow row;
         row.sf = number(sf, 1, "a scale factor S_f >= 1 (1: the fine scene)");
@@ -96,6 +92,28 @@ std::vector<RunRow> parse_runs(const std::string& text, const std::string& sourc
     }
     if (rows.empty()) throw InputError(source, "(no runs)", "at least one row of runs");
     return rows;
+}
+
+void append_run(const std::string& field, const std::string& path, const RunRow& row, const std::string& scene_label) {
+    std::vector<RunRow> rows;
+    const auto table = [&] { return runs_table(rows, scene_label); };
+    if (std::filesystem::exists(path)) {
+        const std::string text = io::read_input_file(field, path, "a runs file (CSV)");
+        if (io::parse_csv(text, path).header != table().columns) {
+            std::string names;
+            for (const auto& c : table().columns) names += (names.empty() ? "" : ",") + c;
+            throw InputError(path + " (header row)", io::parse_csv(text, path).header.empty() ? "(none)" : "other columns",
+                             "a runs file as demscale writes them (" + names + "), or a new file");
+        }
+        rows = parse_runs(text, path, 0);
+        for (const auto& r : rows)
+            if (r.sf == row.sf && r.gamma == row.gamma && r.seed == row.seed)
+                throw InputError(field + " " + path, "S_f " + format_number(row.sf) + ", gamma " + format_number(row.gamma) + ", seed " +
+                                                         std::to_string(row.seed),
+                                 "a run the file does not hold yet (it has this S_f, surface tension and seed)");
+    }
+    rows.push_back(row);
+    io::write_file_atomically(path, io::render(table(), io::Format::csv));
 }
 
 std::vector<RunRow> read_runs_file(const std::string& path, double scene_gamma) {

@@ -39,4 +39,10 @@ io::Table runs_table(const std::vector<RunRow>& rows, const std::string& scene_l
 std::vector<RunRow> read_runs_file(const std::string& path, double scene_gamma);
 std::vector<RunRow> parse_runs(const std::string& text, const std::string& source, double scene_gamma);
 
+// Adds one run to a runs file, creating it when absent, and writes it whole through a temporary
+// file. Throws InputError naming the file (and nothing is written) when it is not a runs file as
+// demscale writes them (its header row differs), is malformed, or already holds this run (same
+// S_f, surface tension and seed). field: the option that named the file.
+void append_run(const std::string& field, const std::string& path, const RunRow& row, const std::string& scene_label);
+
 }  // namespace demscale::slump

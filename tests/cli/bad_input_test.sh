@@ -71,7 +71,7 @@ case $class in
   missing_file)
     scene_commands 'scene.toml: accepted a readable TOML file \(not found\)' "$work/none/scene.toml"
     config_commands 'config.toml: accepted a readable TOML file \(not found\)' "$work/none/config.toml"
-    refuse_no_out '--dump = .*nope.txt: accepted a readable LIGGGHTS dump file \(not found\)' -- "$demscale" pile --dump "$work/nope.txt"
+    refuse_no_out '--dump = .*nope.txt: accepted a readable pile file \(LIGGGHTS/LAMMPS text dump or CSV\) \(not found\)' -- "$demscale" pile --dump "$work/nope.txt"
     refuse 'nope.csv: accepted a readable CSV file \(not found\)' -- "$demscale" slump --scene "$small" --start "$work/nope.csv"
     refuse '--resume = .*nope.ckpt: accepted a checkpoint .*\(not found\)' -- "$demscale" slump --scene "$small" --resume "$work/nope.ckpt"
     refuse_no_out 'nope.csv: accepted a readable CSV file \(not found\)' -- "$demscale" bridge --model table --table "$work/nope.csv"
@@ -83,7 +83,7 @@ case $class in
     mkdir "$work/dir.toml"
     scene_commands 'dir.toml: accepted a readable TOML file \(this is a directory\)' "$work/dir.toml"
     config_commands 'dir.toml: accepted a readable TOML file \(this is a directory\)' "$work/dir.toml"
-    refuse_no_out '--dump = .*dir.toml: accepted a readable LIGGGHTS dump file \(this is a directory\)' -- "$demscale" pile --dump "$work/dir.toml"
+    refuse_no_out '--dump = .*dir.toml: accepted a readable pile file \(LIGGGHTS/LAMMPS text dump or CSV\) \(this is a directory\)' -- "$demscale" pile --dump "$work/dir.toml"
     refuse 'dir.toml: accepted a readable CSV file \(this is a directory\)' -- "$demscale" slump --scene "$small" --start "$work/dir.toml"
     refuse '--resume = .*dir.toml: .*\(this is a directory\)' -- "$demscale" slump --scene "$small" --resume "$work/dir.toml"
     refuse_no_out 'dir.toml: accepted a readable CSV file \(this is a directory\)' -- "$demscale" bridge --model table --table "$work/dir.toml"
@@ -196,6 +196,32 @@ case $class in
     # A coarse particle that cannot pass the cone's top opening (2 R S_f >= 19 mm).
     refuse '--sf = 10: accepted .*opening' -- "$demscale" slump --sf 10
     refuse '--sf = 10: accepted .*opening' -- "$demscale" check-exponent --exponent 1 --sf 10 --cache "$work/cache" ;;
+  malformed_pile)
+    # A pile from another engine: the file, line and column of the bad field; no runs file written
+    # (or an existing one left as it was).
+    pile() { refused "$1" "$demscale" pile "${@:2}"; [ ! -e "$work/runs.csv" ] || fail "runs file written despite the error: ${*:2}"; }
+    head='ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n-1 1\n-1 1\n0 1\nITEM: ATOMS id type radius z y x\n'
+    printf "${head}1 1 0.001 0.001 0 0\n2 1 0.001 0.003 abc 0\n" >"$work/bad.dump"
+    printf "${head}1 1 0.001 0.001 0 0\n2 1 0.001 0.003 0 0\n" >"$work/ok.dump"
+    printf "${head}1 1 0.001 0.001 0 0\n" >"$work/short.dump"
+    printf "${head}1 1 0.0014 0.0014 0 0\n2 1 0.0014 0.0042 0 0\n" >"$work/coarse.dump"
+    printf 'x,y,z,r\n0,0,0.001,0.001\n0,0,0.003,-1\n' >"$work/bad.csv"
+    run=(--append-runs "$work/runs.csv" --seed 1)
+    pile 'bad.dump:11:5 \(y\) = abc: accepted a finite number' --dump "$work/bad.dump" --fill "$work/ok.dump" "${run[@]}"
+    pile 'bad.dump:11:5 \(y\) = abc: accepted a finite number' --dump "$work/ok.dump" --fill "$work/bad.dump" "${run[@]}"
+    pile 'short.dump:9 \(ATOMS\) = 1 rows: accepted 2 rows, as its NUMBER OF ATOMS says' --dump "$work/short.dump"
+    pile 'bad.csv:3:4 \(r\) = -1: accepted a finite number > 0' --dump "$work/bad.csv"
+    pile '--sf = 1: accepted the S_f of the file.s spheres: their median radius 1.4 mm is S_f 1.4' --dump "$work/coarse.dump" "${run[@]}"
+    pile '--sf = 0.5: accepted a scale factor >= 1' --dump "$work/ok.dump" --sf 0.5
+    pile '--seed = \(not given\)' --dump "$work/ok.dump" --fill "$work/ok.dump" --append-runs "$work/runs.csv"
+    pile '--fill = \(not given\)' --dump "$work/ok.dump" "${run[@]}"
+    pile '--gamma = \(not given\): accepted the coarse run.s own surface tension' --dump "$work/coarse.dump" --fill "$work/coarse.dump" --sf 1.4 "${run[@]}"
+    pile '--exponent = nan: accepted a finite number' --dump "$work/coarse.dump" --fill "$work/coarse.dump" --sf 1.4 --exponent nan "${run[@]}"
+    # An existing file that is not a runs file is refused and left as it was.
+    printf 'a,b\n1,2\n' >"$work/other.csv"
+    refused 'other.csv \(header row\) = other columns: accepted a runs file as demscale writes them' \
+      "$demscale" pile --dump "$work/ok.dump" --fill "$work/ok.dump" --append-runs "$work/other.csv" --seed 1
+    [ "$(cat "$work/other.csv")" = "$(printf 'a,b\n1,2')" ] || fail "a refused append changed the file" ;;
   *) fail "unknown class" ;;
 esac
 echo "ok [$class]: $checked bad inputs refused with exit 2, a message naming the input, and no output"

@@ -254,6 +254,43 @@ case $case_name in
     grep -q 'wall/gran model hooke tangential history' "$work/deck/in.slump" || fail "walls not hooke"
     grep -q 'property/global characteristicVelocity scalar 0.3' "$work/deck/in.slump" || fail "no characteristic velocity"
     grep -q "^# linear spring-dashpot normal contact (Hooke): LIGGGHTS' model hooke derives k_n" "$work/deck/in.slump" || fail "no note" ;;
+  pile_measures_any_engine)
+    # A demscale run read back through the door for other engines' piles: the same measures as the
+    # run's own JSON, from its particle CSV (mm) and from a LAMMPS dump (m, columns shuffled, an
+    # earlier snapshot first), and its row in a runs file.
+    small="$src/data/scenes/small_wet.toml"
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$small" --out "$work/deck"
+    expect 0 '"final_height_mm"' -- "$demscale" slump --scene "$small" --start "$work/deck/settled.csv" --format json --no-png --out "$work/run"
+    cp "$work/out" "$work/slump.json"
+    n=$(grep -vc '^#\|^x_mm' "$work/run/slump_particles.csv")
+    { printf 'ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n-1 1\n-1 1\n0 1\nITEM: ATOMS id type x y z radius\n1 1 0 0 0.5 0.002\n'
+      printf 'ITEM: TIMESTEP\n30833\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS ff ff ff\n-0.1 0.1\n-0.1 0.1\n-0.001 0.13\nITEM: ATOMS id type radius z y x\n' "$n"
+      awk -F, '!/^#/ && !/^x_mm/ { printf "%d 1 %.17g %.17g %.17g %.17g\n", ++i, $4 / 1000, $3 / 1000, $2 / 1000, $1 / 1000 }' "$work/run/slump_particles.csv"
+    } >"$work/final.dump"
+    value() { grep "\"$2\":" "$1" | head -1 | sed 's/.*: *//; s/,$//'; }
+    same() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; m = a < 0 ? -a : a; exit !(a != "" && (d < 0 ? -d : d) <= 1e-9 * m + 1e-12) }'; }
+    for pile in "$work/run/slump_particles.csv" "$work/final.dump"; do
+      expect 0 '"final_height_mm"' -- "$demscale" pile --scene "$small" --dump "$pile" --fill "$work/deck/settled.csv"
+      for pair in initial_height_mm:fill_height_mm final_height_mm:final_height_mm slump_mm:slump_mm \
+          slump_over_fill_height:slump_over_fill_height spread_mm:spread_mm fill_mass_g:fill_mass_g particles:particles; do
+        a=$(value "$work/slump.json" "${pair%%:*}") b=$(value "$work/out" "${pair##*:}")
+        same "$a" "$b" || fail "$(basename "$pile"): ${pair%%:*} $a in the run, ${pair##*:} $b measured by pile"
+      done
+    done
+    grep -q '"snapshots": 2' "$work/out" || fail "the dump's snapshots not counted"
+    grep -q '"pile_format": "dump"' "$work/out" || fail "the dump not read as one"
+    # Into a runs file: created, a second run added, the same run again refused and the file kept.
+    args=(pile --scene "$small" --dump "$work/final.dump" --fill "$work/deck/settled.csv" --append-runs "$work/runs.csv")
+    expect 0 'added the run to' -- "$demscale" "${args[@]}" --seed 1
+    expect 0 'added the run to' -- "$demscale" "${args[@]}" --seed 2 --gamma 0
+    cp "$work/runs.csv" "$work/runs.before"
+    expect 2 'seed 1: accepted a run the file does not hold yet' -- "$demscale" "${args[@]}" --seed 1
+    cmp -s "$work/runs.csv" "$work/runs.before" || fail "a refused run changed the runs file"
+    grep -v '^#' "$work/runs.csv" | awk -F, -v s="$(value "$work/slump.json" slump_over_fill_height)" '
+      NR == 1 { ok = $1 == "sf" && $2 == "gamma_n_per_m" && $4 == "slump_over_height"; next }
+      { rows++; d = $4 - s; if ((d < 0 ? -d : d) > 1e-9) ok = 0 }
+      NR == 2 && !($2 > 0) { ok = 0 }  NR == 3 && $2 != 0 { ok = 0 }
+      END { exit !(ok && rows == 2) }' || { cat "$work/runs.csv" >&2; fail "runs rows"; } ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
