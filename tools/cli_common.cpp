@@ -11,6 +11,7 @@
 
 #include "core/input_error.hpp"
 #include "slump/bridge_warnings.hpp"
+#include "slump/liggghts_run.hpp"
 #include "slump/response_study.hpp"
 #include "slump/scene_similarity.hpp"
 
@@ -44,6 +45,22 @@ void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& w
         ->capture_default_str();
     c->add_option("--seed-base", o.seed_base, "first seed of every ensemble (default: the scene's `seed`); another base draws new piles");
     add_backend_options(c, o.slurm);
+    add_engine_options(c, o.engine);
+}
+
+void add_engine_options(CLI::App* c, EngineOptions& o) {
+    c->add_option("--engine", o.engine, "what lifts and spreads the fills: demscale, or liggghts (LIGGGHTS under mpirun; the fill is settled here)")
+        ->capture_default_str();
+    c->add_option("--ranks", o.ranks, "with --engine liggghts: MPI ranks per run (default 2)");
+}
+
+void apply_engine(slump::SlumpScene& scene, const EngineOptions& o) {
+    if (o.engine == "demscale") {
+        if (o.ranks != 0) throw InputError("--ranks", std::to_string(o.ranks), "only with --engine liggghts");
+        return;
+    }
+    if (o.engine != "liggghts") throw InputError("--engine", o.engine, "demscale or liggghts");
+    slump::use_liggghts(scene, o.ranks == 0 ? 2 : o.ranks, "--ranks");
 }
 
 void apply_seed_base(slump::SlumpScene& scene, long seed_base) {
@@ -80,7 +97,12 @@ std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o) {
 }
 
 BatchSettings batch_settings(const StudyRunOptions& o) {
-    const auto par = parallelism(o.jobs, o.threads);
+    auto par = parallelism(o.jobs, o.threads);
+    if (o.engine.engine == "liggghts" && o.jobs == 0) {  // each run takes `ranks` cores: fewer side by side
+        const int ranks = o.engine.ranks == 0 ? 2 : o.engine.ranks, cores = par.jobs * par.threads_per_job;
+        par.jobs = std::max(1, cores / ranks);
+        par.threads_per_job = std::max(1, cores / par.jobs);
+    }
     return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt,
             slurm_settings(o.slurm)};
 }

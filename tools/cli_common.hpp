@@ -90,6 +90,16 @@ void add_backend_options(CLI::App* c, SlurmOptions& o);
 // batch runner refuses Slurm without a cache).
 std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o);
 
+// Which engine lifts and spreads the fills: demscale's, or LIGGGHTS under mpirun (slump/liggghts_run.hpp).
+struct EngineOptions {
+    std::string engine = "demscale";
+    int ranks = 0;  // 0: 2 with liggghts
+};
+void add_engine_options(CLI::App* c, EngineOptions& o);
+// The scene made to run on the chosen engine; InputError for an unknown engine, --ranks without
+// liggghts, or a scene LIGGGHTS cannot express (named keys), before anything runs.
+void apply_engine(slump::SlumpScene& scene, const EngineOptions& o);
+
 // What every command that runs slump ensembles shares: how runs go side by side, the cache,
 // where tables and figures go. add_study_run_options registers the options; batch_options turns
 // them into the runner's settings.
@@ -102,6 +112,7 @@ struct StudyRunOptions {
     std::string baseline = "dry";
     long seed_base = 0;  // 0: the scene's seed
     SlurmOptions slurm;
+    EngineOptions engine;
 };
 void add_study_run_options(CLI::App* c, StudyRunOptions& o, const std::string& what_out);
 // The runner's settings from the options; Parallelism from jobs and threads as parallelism() does.

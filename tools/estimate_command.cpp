@@ -28,6 +28,7 @@ slump::ResponsePlan plan_from(const Options& o) {
     slump::ResponsePlan plan;
     plan.fine = load_scene(o.scene);
     apply_seed_base(plan.fine, o.run.seed_base);
+    apply_engine(plan.fine, o.run.engine);
     plan.scale_factors = parse_number_list(o.sfs, "--sf", 0, 100);
     plan.factors = parse_factor_range(o.range, o.levels, "--range", "--levels");
     plan.offset_exponent = o.offset;

@@ -24,13 +24,16 @@ struct Options {
     std::string baseline = "dry";
     long seed_base = 0;
     SlurmOptions slurm;
+    EngineOptions engine;
 };
 
 int run_report(const Options& o) {
     report::ReportOptions r;
     r.scene_path = !o.scene.empty() ? o.scene : o.quick ? shipped("scenes/small_wet.toml") : default_scene;
     r.scene_label = display_path(r.scene_path);
-    const auto scene = load_scene(r.scene_path);  // its bridge warnings, before the long run
+    auto scene = load_scene(r.scene_path);  // its bridge warnings, before the long run
+    apply_engine(scene, o.engine);           // a scene LIGGGHTS cannot express is refused here
+    r.liggghts_ranks = scene.liggghts_ranks;
     // The similarity table follows the scene the user names; the shipped scenes go with the paper's Table 1.
     r.similarity = similarity_inputs(o.config, o.scene);
     r.bridge_table_path = default_bridge_table;
@@ -88,6 +91,7 @@ std::vector<Command> report_commands(CLI::App& app) {
         ->capture_default_str();
     c->add_option("--threads", o->threads, "OpenMP threads per run (default: cores / jobs)");
     add_backend_options(c, o->slurm);
+    add_engine_options(c, o->engine);
     c->add_flag("--estimate", o->estimate, "add the measured exponent: response curves and k-hat (costs the most; see estimate-exponent)");
     c->add_option("--estimate-sf", o->estimate_sf, "scale factors of the measured exponent (default 1.4,1.96; --quick: 1.4)");
     c->add_option("--estimate-range", o->estimate_range, "lowest and highest surface tension factor of its fine curve")->capture_default_str();

@@ -35,6 +35,7 @@ struct Options {
     bool force_dt = false, no_png = false, fixed_time = false, energy = false;
     std::string start;  // settled state to lift from
     std::string resume; // checkpoint of an interrupted run
+    EngineOptions engine;
 };
 
 // --threads: N OpenMP threads; 0: OMP_NUM_THREADS when set, else the cores no other job is using
@@ -89,6 +90,7 @@ int run_slump_command(const Options& o) {
     std::vector<std::string> scene_warnings;
     const auto fine = load_scene(o.scene, &scene_warnings);
     auto scene = slump::coarse_grained(fine, {o.sf, o.exponent, o.scaled});
+    apply_engine(scene, o.engine);
     if (o.fixed_time) scene.rest_duration_s = 1e30;  // run the full spread time (engine comparisons)
     std::unique_ptr<io::VtkSeries> series;
     if (o.vtk_every > 0) series = std::make_unique<io::VtkSeries>(std::filesystem::path(o.out_dir) / "slump_series.pvd");
@@ -99,6 +101,7 @@ int run_slump_command(const Options& o) {
         phases.start = &settled;
     }
     phases.checkpoint = std::filesystem::path(o.out_dir) / "slump.ckpt";
+    phases.work_dir = std::filesystem::path(o.out_dir) / "liggghts";  // LIGGGHTS' deck, log and dump (--engine liggghts)
     phases.resume = o.resume;
     phases.energy_ledger = o.energy;
     slump::SlumpResult r;
@@ -223,6 +226,7 @@ std::vector<Command> slump_commands(CLI::App& app) {
     slump->add_option("--start", o->start, "lift and spread from this settled state (settled.csv of export liggghts)");
     slump->add_option("--resume", o->resume, "continue an interrupted run from its checkpoint (OUT/slump.ckpt)");
     slump->add_option("--threads", o->threads, "OpenMP threads (default: the cores no other job is using)");
+    add_engine_options(slump, o->engine);
     slump->add_flag("--fixed-time", o->fixed_time, "run the whole spread time, no early stop at rest (engine comparisons)");
 
     auto* exp = app.add_subcommand("export", "write a scene for another DEM engine");

@@ -38,6 +38,7 @@ slump::StudyPlan plan_from(const Options& o, const std::string& exponent_field) 
     slump::StudyPlan plan;
     plan.fine = load_scene(o.scene);
     apply_seed_base(plan.fine, o.run.seed_base);
+    apply_engine(plan.fine, o.run.engine);
     plan.exponents = parse_exponents(o.exponents, exponent_field);
     plan.scale_factors = scale_factors_or_usable(o.sfs, plan.fine);
     plan.scaled = o.scaled;
@@ -119,7 +120,11 @@ int report(const Options& o, const slump::StudyPlan& plan, const slump::Study& s
         std::cout << "cost: " << distinct.size() << " distinct runs (" << cached.size() << " from the cache"
                   << (study.has_control() ? "; " + std::to_string(dry.size()) + " of them the dry control" : std::string()) << "), "
                   << format_short(study.wall_s, 3) << " s of wall time, " << plan.jobs << " job(s) x " << plan.threads_per_job
-                  << " thread(s)\n";
+                  << " thread(s)"
+                  << (plan.fine.liggghts_ranks > 0 ? "; lifted and spread by LIGGGHTS on " + std::to_string(plan.fine.liggghts_ranks) +
+                                                         " MPI ranks (fills settled by demscale)"
+                                                   : std::string())
+                  << "\n";
         if (study.second_look.any()) std::cout << study.second_look.describe() << "\n";
         for (const auto& v : study.deciding())
             if (!v.unusable.empty())

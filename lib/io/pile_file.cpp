@@ -16,6 +16,7 @@ namespace {
 // Where the position, radius and density of a sphere sit in a row; -1: absent.
 struct Columns {
     int x = -1, y = -1, z = -1, radius = -1, density = -1;
+    int vx = -1, vy = -1, vz = -1;  // velocity, m/s (all three or none)
     double length_unit = 1;    // m per unit of the file's lengths
     bool diameter = false;     // the size column is a diameter
 };
@@ -49,7 +50,15 @@ void add_sphere(dem::Particles& p, const std::vector<std::string>& fields, const
         rho = number(c.density, "a density > 0 in kg/m^3");
         if (!(rho > 0)) throw InputError(at(c.density), fields[static_cast<std::size_t>(c.density)], "a density > 0 in kg/m^3");
     }
-    p.add({x, y, z}, r, rho);
+    dem::Vec3 v = dem::Vec3::Zero();
+    if (c.vx >= 0) v = {number(c.vx, "a finite velocity"), number(c.vy, "a finite velocity"), number(c.vz, "a finite velocity")};
+    p.add({x, y, z}, r, rho, v);
+}
+
+// Velocity columns, when all three are there.
+void find_velocity(Columns& c, const std::vector<std::string>& names) {
+    c.vx = index_of(names, {"vx"}), c.vy = index_of(names, {"vy"}), c.vz = index_of(names, {"vz"});
+    if (c.vx < 0 || c.vy < 0 || c.vz < 0) c.vx = c.vy = c.vz = -1;
 }
 
 // "ITEM: ATOMS id type x y z radius ...": the columns, checked on the header's line.
@@ -59,6 +68,7 @@ Columns dump_columns(const std::vector<std::string>& names, const std::string& w
     c.radius = index_of(names, {"radius"});
     if (c.radius < 0) c.radius = index_of(names, {"diameter"}), c.diameter = true;
     c.density = index_of(names, {"density"});
+    find_velocity(c, names);
     std::string listed;
     for (const auto& n : names) listed += (listed.empty() ? "" : " ") + n;
     if (c.x < 0 || c.y < 0 || c.z < 0)
@@ -134,6 +144,7 @@ PileFile parse_csv_pile(const std::string& text, const std::string& source, doub
         c.length_unit = 1e-3;
     }
     c.density = index_of(d.header, {"density"});
+    find_velocity(c, d.header);
     if (c.x < 0 || c.y < 0 || c.z < 0 || c.radius < 0) {
         std::string listed;
         for (const auto& n : d.header) listed += (listed.empty() ? "" : ",") + n;

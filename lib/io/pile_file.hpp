@@ -5,7 +5,8 @@
 //  - a CSV with columns x, y, z and radius (or r) in metres, or x_mm, y_mm, z_mm and radius_mm (or
 //    r_mm) as `demscale slump` writes them, optionally density (kg/m³);
 //  - demscale's particle state (settled.csv of `export liggghts`), a CSV of the first kind.
-// Spheres without a density column get `density`.
+// Spheres without a density column get `density`; velocities (vx vy vz, m/s) are read where all
+// three columns are there, else zero.
 #pragma once
 
 #include <string>

@@ -42,6 +42,9 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
     for (const auto& part : parts)
         if (part.active(s))
             for (const auto& p : part.parameters) add(std::string(p.label), p.get(s), std::string(p.unit));
+    say("engine of the lift and spread", s.liggghts_ranks > 0 ? "LIGGGHTS 3.8 under mpirun, " + std::to_string(s.liggghts_ranks) +
+                                                                     " ranks (the fill poured and settled by demscale)"
+                                                               : "demscale");
     add("time step (fine run)", s.dt_s * 1e6, "us");
     add("gravity", s.gravity, "m/s^2");
     t.rows.push_back({"settle / spread time limits", format_short(s.settle_time_s) + " / " + format_short(s.spread_time_s),

@@ -27,6 +27,7 @@
 #include "report/slump_study_tables.hpp"
 #include "slump/bridge_warnings.hpp"
 #include "slump/scene_bridges.hpp"
+#include "slump/liggghts_run.hpp"
 #include "slump/slump_files.hpp"
 #include "slump/study.hpp"
 #include "stats/verdict.hpp"
@@ -395,6 +396,7 @@ ReportOutcome write_similarity_report(const ReportOptions& o, const std::functio
     const auto ks = o.exponents.empty() ? config.exponents : o.exponents;
     auto scene = slump::load_slump_scene(o.scene_path);
     if (o.seed_base > 0) scene.seed = o.seed_base;
+    if (o.liggghts_ranks > 0) slump::use_liggghts(scene, o.liggghts_ranks, "--ranks");
     const auto plan = study_plan(o, scene, ks);  // a bad plan is refused before any file is written
     const auto response = response_plan(o, scene);
     if (o.slurm) run_all_on_slurm(o, plan, response, say);

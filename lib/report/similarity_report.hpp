@@ -31,6 +31,7 @@ struct ReportOptions {
     std::optional<slump::SlurmSettings> slurm;  // the slump runs go to Slurm (slump/slurm_backend.hpp)
     int seeds = 8;                          // runs per ensemble, fine and coarse
     unsigned seed_base = 0;                 // first seed of every ensemble (0: the scene's own)
+    int liggghts_ranks = 0;                 // > 0: LIGGGHTS lifts and spreads, on this many ranks (slump/liggghts_run.hpp)
     slump::Baseline baseline = slump::Baseline::dry;  // a wet scene's dry control (slump/study.hpp)
     std::string git_revision;               // shown in the inputs
     std::function<void(const std::string&)> live;  // slump runs in progress (slump::BatchOptions::live)

@@ -145,10 +145,17 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
     return w;
 }
 
+}  // namespace
+
+DeckSteps deck_steps(const SlumpScene& sc) {
+    return {std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s), std::lround(sc.spread_time_s / sc.dt_s)};
+}
+
+namespace {
+
 // particles: the pile's count; atoms after it are the rough floor's grains, which only the pile touches.
 std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains) {
-    const long lift_steps = std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s);
-    const long spread_steps = std::lround(sc.spread_time_s / sc.dt_s);
+    const auto [lift_steps, spread_steps] = deck_steps(sc);
     // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and the scene's rolling damping η_r.
     const auto model = sc.rolling_model;
     const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
@@ -214,7 +221,8 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
       << "fix lift all move/mesh mesh cone linear 0.0 0.0 " << sc.lift_speed_m_per_s << "\n"
       << "run " << lift_steps << "\n"
       << "unfix lift\nunfix walls\nunfix cone\n"
-      << "dump final " << pile << " custom " << lift_steps + spread_steps << " final.dump id type x y z radius\n"
+      << "dump final " << pile << " custom " << lift_steps + spread_steps << " final.dump id type x y z radius vx vy vz\n"
+      << "dump_modify final format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
       << "run " << spread_steps << "\n";
     return s.str();
 }

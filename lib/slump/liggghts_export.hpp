@@ -16,7 +16,14 @@
 
 namespace demscale::slump {
 
-// Writes in.slump, particles.data and cone.stl into out_dir; returns their paths.
+// The deck's step counts: the lift (lift height / lift speed / dt) and the spread (spread time / dt).
+struct DeckSteps {
+    long lift, spread;
+};
+DeckSteps deck_steps(const SlumpScene& scene);
+
+// Writes in.slump, particles.data and cone.stl into out_dir; returns their paths. The deck ends in
+// final.dump: id, type, x, y, z, radius and velocity of the pile's spheres, every digit (%.17g).
 std::vector<std::filesystem::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled,
                                                    const std::filesystem::path& out_dir);
 

@@ -121,6 +121,7 @@ void run_here(const std::vector<StudyRun*>& pending, RunCache* cache, const Batc
                 if (failure) return;
                 SlumpPhases phases;
                 if (cache) phases.checkpoint = cache->dir() / (r.key + ".ckpt");
+                if (cache && r.scene.liggghts_ranks > 0) phases.work_dir = cache->dir() / "liggghts" / r.key;  // deck, log, dump kept
                 const bool resumed = cache && std::filesystem::exists(phases.checkpoint);
                 if (resumed) phases.resume = phases.checkpoint;
                 r.result = run_slump(r.scene, live.progress(job, describe(r)), o.force_dt, phases);
@@ -204,7 +205,11 @@ void run_batch(const std::vector<StudyRun*>& all, const BatchOptions& o, const s
     if (log)
         log(std::to_string(unique.size()) + " distinct runs, " + std::to_string(unique.size() - pending.size()) + " cached, " +
             std::to_string(pending.size()) + " to run (" + (o.slurm ? std::string("on Slurm") : std::to_string(o.jobs) + " at a time") +
-            ", " + std::to_string(o.threads_per_job) + " thread(s) each)");
+            ", " + std::to_string(o.threads_per_job) + " thread(s) each" +
+            (!pending.empty() && pending.front()->scene.liggghts_ranks > 0
+                 ? "; LIGGGHTS lifts and spreads on " + std::to_string(pending.front()->scene.liggghts_ranks) + " MPI ranks"
+                 : std::string()) +
+            ")");
 
     if (o.slurm && !pending.empty()) {
         std::vector<SlurmRun> handed;

@@ -87,6 +87,7 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
         {"fill_kind", static_cast<double>(s.fill), true, [](SlumpScene& t, double v) { t.fill = as<FillKind>(v); }},
         {"pour_time", s.pour_time_s, true, into(&SlumpScene::pour_time_s)},
         {"rest_quantile", s.rest_quantile, true, into(&SlumpScene::rest_quantile)},
+        {"liggghts_ranks", static_cast<double>(s.liggghts_ranks), s.liggghts_ranks > 0, into(&SlumpScene::liggghts_ranks)},
     };
     l.insert(l.end(), protocol.begin(), protocol.end());
     return l;

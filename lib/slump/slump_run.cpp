@@ -4,6 +4,7 @@
 
 #include "dem/law_parts.hpp"
 #include "dem/time_step.hpp"
+#include "slump/liggghts_run.hpp"
 #include "slump/slump_protocol.hpp"
 
 namespace demscale::slump {
@@ -31,6 +32,7 @@ double SlumpResult::energy_balance_error() const {
 
 SlumpResult run_slump(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                       SlumpPhases phases) {
+    if (s.liggghts_ranks > 0 && !phases.settle_only) return run_by_liggghts(s, progress, force_dt, phases);
     const EngineLine line = listed_engine(s, phases.energy_ledger);  // before any work: exit 2 when not compiled
     check_slump_time_step(s, force_dt);
     const double critical = binding_time_scale(s);

@@ -75,6 +75,9 @@ struct SlumpPhases {
     bool fill_measures = true;  // false: no fill measures (about 140 sample points per sphere); the size sweep's runs
     const dem::Particles* start = nullptr;  // settled state: skip fill and settle
     std::filesystem::path checkpoint, resume;
+    // Where another engine's files go (a LIGGGHTS run's deck, log and dump: slump/liggghts_run.hpp);
+    // empty: a temporary folder, removed after the run.
+    std::filesystem::path work_dir;
     // When the engines reorder their spheres. Reordering changes a run's last bits, so the commands
     // keep this default, which the run cache's format stands for (scene_text.hpp); tests and
     // benchmarks change it.
@@ -90,6 +93,7 @@ double binding_time_scale(const SlumpScene& scene);
 // progress is called about every 5 ms of simulated time. Throws InputError for a time step above
 // 0.2 × the Rayleigh time (unless force_dt) or a checkpoint of another scene, std::runtime_error if
 // the engine stops, and Interrupted (core/interrupt.hpp) after writing the checkpoint on a signal.
+// A scene with liggghts_ranks > 0 is lifted and spread by LIGGGHTS (slump/liggghts_run.hpp).
 SlumpResult run_slump(const SlumpScene& scene, const std::function<void(const SlumpProgress&)>& progress = {},
                       bool force_dt = false, SlumpPhases phases = {});
 

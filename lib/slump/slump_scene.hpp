@@ -67,6 +67,9 @@ struct SlumpScene : dem::ContactSettings {
     double rest_duration_s = 0.02;     // …for this long (slump/motion.hpp)
     double rest_quantile = 0.99;
     double skin_m = 0.3e-3;
+    // The engine that lifts and spreads the fill: 0, demscale's; N > 0, LIGGGHTS under mpirun with N
+    // ranks (the fill is poured and settled here either way: slump/liggghts_run.hpp).
+    int liggghts_ranks = 0;
     Tolerances tolerances;
     GeometryLimits limits;
     // The similarity table and Figs. 3-4 this scene implies (table, curves, regress, report):

@@ -152,7 +152,19 @@ case $class in
     refuse_no_out '--length = 0: accepted a finite number > 0' -- "$demscale" scaling --length 0
     refuse '--tol-slump = -1: accepted a finite number > 0' -- "$demscale" check-exponent --exponent 1 --tol-slump -1
     refuse '--seeds = -1: accepted 1 to 64' -- "$demscale" sweep --seeds -1
-    refuse_no_out '--atol: value -1; accepted a finite number >= 0' -- "$demscale" regress --atol -1 ;;
+    refuse_no_out '--atol: value -1; accepted a finite number >= 0' -- "$demscale" regress --atol -1
+    # The engine: a known one, ranks only for LIGGGHTS, and a scene LIGGGHTS can express, all
+    # refused before any run (none of this needs LIGGGHTS installed).
+    refuse '--engine = lammps: accepted demscale or liggghts' -- "$demscale" check-exponent --exponent 1 --scene "$small" --engine lammps --cache "$work/cache"
+    refuse '--ranks = 2: accepted only with --engine liggghts' -- "$demscale" sweep --scene "$small" --ranks 2 --cache "$work/cache"
+    refuse '--ranks = 65: accepted 1 to 64 MPI ranks' -- "$demscale" slump --scene "$small" --engine liggghts --ranks 65
+    scene '[liquid]' 'wet_walls = true'
+    walls='scene.toml: liquid.wet_walls = true: accepted false with --engine liggghts'
+    refuse "$walls" -- "$demscale" slump --scene "$work/scene.toml" --engine liggghts
+    for command in "check-exponent --exponent 1" sweep estimate-exponent report; do
+      # shellcheck disable=SC2086
+      refuse "$walls" -- "$demscale" $command --scene "$work/scene.toml" --engine liggghts --cache "$work/cache"
+    done ;;
   non_finite)
     for v in nan inf -inf; do
       scene '[particles]' "radius_mm = $v"

@@ -137,4 +137,25 @@ grep -q 'submitted 1 run(s)' slurm.err || fail "the lost run was not submitted a
 diff <(physics local.csv) <(physics slurm.csv) || fail "tables differ after the lost run came back"
 cmp "local/$lost.csv" "slurm/$lost.csv" || fail "the rerun's final state differs"
 
+# LIGGGHTS as the array's tasks: each task settles its fill and runs mpirun -np 2 liggghts inside
+# the task, and the study judges what comes back (the local trip: tests/cli/liggghts_test.sh).
+# shellcheck source=../cli/need_liggghts.sh
+. "$src/tests/cli/need_liggghts.sh"
+if need_liggghts; then
+  lig=("${study[@]}" --baseline none --engine liggghts --ranks 2 --cache lig --out lig_out --backend slurm --wait)
+  "$demscale" "${lig[@]}" >lig.csv 2>lig.err
+  rc=$?
+  case $rc in 0 | 1 | 4) ;; *) cat lig.err lig/slurm/logs/* >&2; fail "the LIGGGHTS study on Slurm failed (exit $rc)" ;; esac
+  grep -q 'submitted 4 run(s) as Slurm job array' lig.err || { cat lig.err >&2; fail "the 4 LIGGGHTS runs were not submitted"; }
+  n=0
+  for d in lig/liggghts/*/; do
+    grep -q 'on 2 procs' "$d/log.liggghts" || fail "$d: LIGGGHTS did not run on 2 ranks in its task"
+    n=$((n + 1))
+  done
+  [ $n -eq 4 ] || fail "expected 4 LIGGGHTS runs, found $n"
+  echo "4 LIGGGHTS runs on 2 ranks each, as Slurm array tasks, judged"
+else
+  echo "note: no LIGGGHTS trip through Slurm: $why_no_liggghts"
+fi
+
 echo "ok"

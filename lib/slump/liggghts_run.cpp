@@ -1,0 +1,105 @@
+#include "slump/liggghts_run.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <unistd.h>
+
+#include "core/input_error.hpp"
+#include "core/subprocess.hpp"
+#include "dem/bridge_law.hpp"
+#include "io/particle_state.hpp"
+#include "io/pile_file.hpp"
+#include "slump/liggghts_export.hpp"
+#include "slump/measurements.hpp"
+#include "slump/motion.hpp"
+
+namespace demscale::slump {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The last lines of a program's output, for a message.
+std::string tail(const std::string& text, int lines) {
+    std::size_t at = text.size();
+    for (int n = 0; n <= lines && at != std::string::npos && at > 0; ++n) at = text.rfind('\n', at - 1);
+    return text.substr(at == std::string::npos ? 0 : at + 1);
+}
+
+// A folder of its own for one run, removed at the end when it was made here.
+struct WorkDir {
+    fs::path path;
+    bool temporary = false;
+    explicit WorkDir(const fs::path& given) : path(given), temporary(given.empty()) {
+        if (temporary) path = fs::temp_directory_path() / ("demscale-liggghts-" + std::to_string(::getpid()) + "-" +
+                                                           std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+        fs::create_directories(path);
+    }
+    ~WorkDir() {
+        std::error_code ignored;
+        if (temporary) fs::remove_all(path, ignored);
+    }
+    WorkDir(const WorkDir&) = delete;
+    WorkDir& operator=(const WorkDir&) = delete;
+};
+
+}  // namespace
+
+void use_liggghts(SlumpScene& s, int ranks, const std::string& ranks_field) {
+    if (ranks < 1 || ranks > 64) throw InputError(ranks_field, std::to_string(ranks), "1 to 64 MPI ranks");
+    if (s.wet && s.wet_walls)
+        throw InputError(s.source + ": liquid.wet_walls", "true",
+                         "false with --engine liggghts: LIGGGHTS' cohesion easo/capillary/viscous refuses walls, and a deck with dry "
+                         "walls is another scene");
+    if (s.wet) {
+        const auto& source = dem::particle_curve_source(s);
+        if (source.liggghts.empty())
+            throw InputError(s.source + ": liquid.bridge_variant", std::string(source.value),
+                             "a bridge LIGGGHTS has (mikami1998) with --engine liggghts: it has no equivalent of " + std::string(source.label));
+    }
+    s.liggghts_ranks = ranks;
+}
+
+SlumpResult run_by_liggghts(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
+                            SlumpPhases phases) {
+    // The fill: demscale's own pour and settle of the same scene and seed.
+    SlumpScene here = s;
+    here.liggghts_ranks = 0;
+    const WorkDir dir(phases.work_dir);
+    phases.settle_only = true;
+    phases.checkpoint.clear(), phases.resume.clear();  // the settle is short; an interrupt restarts it
+    SlumpResult res = run_slump(here, progress, force_dt, phases);
+    const dem::Particles settled = res.final_state;
+    export_liggghts(here, settled, dir.path);
+    io::write_particle_state(dir.path / "settled.csv", settled);
+
+    std::vector<std::string> argv = {"mpirun", "-np", std::to_string(s.liggghts_ranks), "--oversubscribe", "--bind-to", "none",
+                                     "--mca", "btl_vader_single_copy_mechanism", "none"};
+    if (::geteuid() == 0) argv.push_back("--allow-run-as-root");  // Open MPI refuses root without it
+    for (const char* a : {"-wdir", dir.path.c_str(), "liggghts", "-in", "in.slump", "-log", "log.liggghts"}) argv.emplace_back(a);
+    if (progress) progress({"liggghts", res.settle_end, res.settle_end + s.lift_height_m / s.lift_speed_m_per_s + s.spread_time_s,
+                            res.steps, 0, {}});
+    const auto start = std::chrono::steady_clock::now();
+    const CommandOutput out = run_command(argv);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (out.exit_code == 127)
+        throw std::runtime_error("mpirun not found: --engine liggghts needs Open MPI and LIGGGHTS (Debian: apt-get install openmpi-bin liggghts)");
+    if (out.exit_code != 0)
+        throw std::runtime_error("LIGGGHTS under mpirun exited " + std::to_string(out.exit_code) + " in " + dir.path.string() + ":\n" +
+                                 tail(out.output, 6));
+    const auto dump = io::read_pile_file("LIGGGHTS' dump", (dir.path / "final.dump").string(), s.material.density);
+
+    const auto steps = deck_steps(s);
+    res.final_state = dump.particles;
+    res.final = measure_pile(dump.particles, s);
+    res.motion = summarize_motion(dump.particles, dump.particles.size(), s.rest_speed_m_per_s);
+    res.came_to_rest = quantile_slower_than(dump.particles, dump.particles.size(), s.rest_speed_m_per_s, s.rest_quantile);
+    res.lift_end = res.settle_end + static_cast<double>(steps.lift) * s.dt_s;
+    res.end = res.lift_end + static_cast<double>(steps.spread) * s.dt_s;
+    res.rest_since = res.came_to_rest ? res.end : -1;  // one snapshot: at rest at the end, not since when
+    res.steps += static_cast<std::size_t>(steps.lift + steps.spread);
+    res.wall_s += wall;
+    return res;
+}
+
+}  // namespace demscale::slump
