@@ -96,13 +96,18 @@ std::optional<slump::SlurmSettings> slurm_settings(const SlurmOptions& o) {
     return s;
 }
 
-BatchSettings batch_settings(const StudyRunOptions& o) {
-    auto par = parallelism(o.jobs, o.threads);
-    if (o.engine.engine == "liggghts" && o.jobs == 0) {  // each run takes `ranks` cores: fewer side by side
-        const int ranks = o.engine.ranks == 0 ? 2 : o.engine.ranks, cores = par.jobs * par.threads_per_job;
+Parallelism parallelism(int jobs, int threads, const EngineOptions& engine) {
+    auto par = parallelism(jobs, threads);
+    if (engine.engine == "liggghts" && jobs == 0) {  // each run takes `ranks` cores: fewer side by side
+        const int ranks = engine.ranks == 0 ? 2 : engine.ranks, cores = par.jobs * par.threads_per_job;
         par.jobs = std::max(1, cores / ranks);
         par.threads_per_job = std::max(1, cores / par.jobs);
     }
+    return par;
+}
+
+BatchSettings batch_settings(const StudyRunOptions& o) {
+    const auto par = parallelism(o.jobs, o.threads, o.engine);
     return {par.jobs, par.threads_per_job, o.no_cache ? std::nullopt : std::optional<std::string>(o.cache), o.force_dt,
             slurm_settings(o.slurm)};
 }

@@ -99,6 +99,9 @@ void add_engine_options(CLI::App* c, EngineOptions& o);
 // The scene made to run on the chosen engine; InputError for an unknown engine, --ranks without
 // liggghts, or a scene LIGGGHTS cannot express (named keys), before anything runs.
 void apply_engine(slump::SlumpScene& scene, const EngineOptions& o);
+// parallelism() for that engine: with LIGGGHTS each run takes `ranks` cores, so unless --jobs is
+// given, cores / ranks runs go side by side.
+Parallelism parallelism(int jobs, int threads, const EngineOptions& engine);
 
 // What every command that runs slump ensembles shares: how runs go side by side, the cache,
 // where tables and figures go. add_study_run_options registers the options; batch_options turns

@@ -42,7 +42,7 @@ int run_report(const Options& o) {
     r.quick = o.quick;
     r.out_dir = o.out_dir;
     if (!o.no_cache) r.cache_dir = o.cache;
-    const auto par = parallelism(o.jobs, o.threads);
+    const auto par = parallelism(o.jobs, o.threads, o.engine);
     r.jobs = par.jobs, r.threads_per_job = par.threads_per_job;
     r.slurm = slurm_settings(o.slurm);
     if (o.seeds < 0) throw InputError("--seeds", std::to_string(o.seeds), "1 to 64");

@@ -148,14 +148,15 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
 }  // namespace
 
 DeckSteps deck_steps(const SlumpScene& sc) {
-    return {std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s), std::lround(sc.spread_time_s / sc.dt_s)};
+    return {std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s), std::lround(sc.spread_time_s / sc.dt_s),
+            std::max(1L, std::lround(sc.rest_duration_s / 4 / sc.dt_s))};
 }
 
 namespace {
 
 // particles: the pile's count; atoms after it are the rough floor's grains, which only the pile touches.
-std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains) {
-    const auto [lift_steps, spread_steps] = deck_steps(sc);
+std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t grains, bool stop_at_rest) {
+    const auto [lift_steps, spread_steps, check] = deck_steps(sc);
     // demscale's epsd is LIGGGHTS' epsd3 with Ai's prefactor 2.25 and the scene's rolling damping η_r.
     const auto model = sc.rolling_model;
     const std::string rolling = model == slump::RollingModel::constant_torque ? " rolling_friction cdt"
@@ -181,8 +182,12 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
     std::ostringstream s;
     s << "# LIGGGHTS input deck written by demscale export liggghts: " << sc.name << ", " << particles << " spheres\n"
       << "# Same laws, parameters, time step, lift and spread as demscale's run from the same settled fill.\n";
-    s << "# Spreading runs the scene's whole spread_time_s (" << sc.spread_time_s
-      << " s): LIGGGHTS has no rest criterion; compare with demscale slump --start settled.csv --fixed-time.\n";
+    if (stop_at_rest)
+        s << "# Spreading stops at rest by demscale's criterion (checked every " << check << " steps) or after spread_time_s ("
+          << sc.spread_time_s << " s); compare with demscale slump --start settled.csv.\n";
+    else
+        s << "# Spreading runs the scene's whole spread_time_s (" << sc.spread_time_s
+          << " s): LIGGGHTS has no rest criterion; compare with demscale slump --start settled.csv --fixed-time.\n";
     for (const auto& n : wet.notes) s << "# " << n << "\n";
     for (const auto& n : unmatched) s << "# " << n << "\n";
     // Everything that moves acts on group `pile`; the floor's grains (if any) are never integrated.
@@ -220,22 +225,39 @@ std::string deck(const slump::SlumpScene& sc, std::size_t particles, std::size_t
       << "# lift the cone " << sc.lift_height_m * 1e3 << " mm at " << sc.lift_speed_m_per_s << " m/s, then remove it\n"
       << "fix lift all move/mesh mesh cone linear 0.0 0.0 " << sc.lift_speed_m_per_s << "\n"
       << "run " << lift_steps << "\n"
-      << "unfix lift\nunfix walls\nunfix cone\n"
-      << "dump final " << pile << " custom " << lift_steps + spread_steps << " final.dump id type x y z radius vx vy vz\n"
-      << "dump_modify final format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
-      << "run " << spread_steps << "\n";
+      << "unfix lift\nunfix walls\nunfix cone\n";
+    const std::string dump = "dump_modify final format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"\n";
+    if (!stop_at_rest) {
+        s << "dump final " << pile << " custom " << lift_steps + spread_steps << " final.dump id type x y z radius vx vy vz\n"
+          << dump << "run " << spread_steps << "\n";
+        return s.str();
+    }
+    // demscale's rest criterion (slump/motion.hpp) in LIGGGHTS' input language: the count of spheres
+    // at the rest speed or faster, after every `check` steps; at rest after five passes in a row.
+    const auto allowed = static_cast<long>(std::floor((1 - sc.rest_quantile) * static_cast<double>(particles) + 1e-9));
+    s << "# spread until at rest: at most " << allowed << " of the " << particles << " spheres at " << sc.rest_speed_m_per_s
+      << " m/s or faster, at five checks " << check << " steps apart (" << sc.rest_duration_s << " s)\n"
+      << "variable speed atom sqrt(vx*vx+vy*vy+vz*vz)\nvariable fast atom v_speed>=" << sc.rest_speed_m_per_s << "\n"
+      << "compute nfast " << pile << " reduce sum v_fast\nthermo_style custom step atoms ke c_nfast\n"
+      << "variable still equal 0\nvariable chunk loop " << (spread_steps + check - 1) / check << "\n"
+      << "label spread\nrun " << check << "\nvariable nf equal c_nfast\n"
+      << "if \"${nf} <= " << allowed << "\" then \"variable still equal $(v_still+1)\" else \"variable still equal 0\"\n"
+      << "if \"${still} >= 5\" then \"jump SELF rested\"\nnext chunk\njump SELF spread\njump SELF ended\n"
+      << "label rested\nvariable atstep equal step\nprint \"" << liggghts_rest_line << "${atstep}\"\nlabel ended\n"
+      << "dump final " << pile << " custom 1 final.dump id type x y z radius vx vy vz\n" << dump << "run 0\n";
     return s.str();
 }
 
 }  // namespace
 
-std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled, const fs::path& out_dir) {
+std::vector<fs::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled, const fs::path& out_dir,
+                                      bool stop_at_rest) {
     dem::Particles all = settled.mobile();
     const std::size_t pile = all.size();
     all.append(slump::floor_grains(scene));
     io::write_file_atomically(out_dir / "particles.data", data_file(all, fitted_box(scene, settled.mobile())));
     io::write_file_atomically(out_dir / "cone.stl", cone_stl(scene));
-    io::write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile));
+    io::write_file_atomically(out_dir / "in.slump", deck(scene, pile, all.size() - pile, stop_at_rest));
     return {out_dir / "in.slump", out_dir / "particles.data", out_dir / "cone.stl"};
 }
 

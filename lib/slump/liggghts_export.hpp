@@ -16,15 +16,23 @@
 
 namespace demscale::slump {
 
-// The deck's step counts: the lift (lift height / lift speed / dt) and the spread (spread time / dt).
+// The deck's step counts: the lift (lift height / lift speed / dt), the spread (spread time / dt),
+// and with stop_at_rest the steps between two rest checks (a quarter of the rest duration).
 struct DeckSteps {
-    long lift, spread;
+    long lift, spread, rest_check;
 };
 DeckSteps deck_steps(const SlumpScene& scene);
 
+// The line a deck with stop_at_rest prints when the pile is at rest, before its step number.
+inline constexpr const char* liggghts_rest_line = "demscale: at rest at step ";
+
 // Writes in.slump, particles.data and cone.stl into out_dir; returns their paths. The deck ends in
 // final.dump: id, type, x, y, z, radius and velocity of the pile's spheres, every digit (%.17g).
+// It spreads for the scene's whole spread time, or with stop_at_rest until the pile is at rest by
+// demscale's criterion (slump/motion.hpp: at most (1 − q) of the spheres at the rest speed or
+// faster, at five checks rest_check steps apart, so over the rest duration), then prints
+// liggghts_rest_line and its step.
 std::vector<std::filesystem::path> export_liggghts(const slump::SlumpScene& scene, const dem::Particles& settled,
-                                                   const std::filesystem::path& out_dir);
+                                                   const std::filesystem::path& out_dir, bool stop_at_rest = false);
 
 }  // namespace demscale::slump

@@ -70,7 +70,7 @@ SlumpResult run_by_liggghts(const SlumpScene& s, const std::function<void(const 
     phases.checkpoint.clear(), phases.resume.clear();  // the settle is short; an interrupt restarts it
     SlumpResult res = run_slump(here, progress, force_dt, phases);
     const dem::Particles settled = res.final_state;
-    export_liggghts(here, settled, dir.path);
+    export_liggghts(here, settled, dir.path, /*stop_at_rest=*/true);
     io::write_particle_state(dir.path / "settled.csv", settled);
 
     std::vector<std::string> argv = {"mpirun", "-np", std::to_string(s.liggghts_ranks), "--oversubscribe", "--bind-to", "none",
@@ -89,15 +89,21 @@ SlumpResult run_by_liggghts(const SlumpScene& s, const std::function<void(const 
                                  tail(out.output, 6));
     const auto dump = io::read_pile_file("LIGGGHTS' dump", (dir.path / "final.dump").string(), s.material.density);
 
+    // The deck stops at rest and says at which step (LIGGGHTS counts from the lift's start); else it
+    // ran the whole spread time.
     const auto steps = deck_steps(s);
+    long ran = steps.lift + (steps.spread + steps.rest_check - 1) / steps.rest_check * steps.rest_check;
+    const std::size_t said = out.output.rfind(liggghts_rest_line);
+    res.came_to_rest = said != std::string::npos;
+    if (res.came_to_rest) ran = std::stol(out.output.substr(said + std::string(liggghts_rest_line).size()));
     res.final_state = dump.particles;
     res.final = measure_pile(dump.particles, s);
     res.motion = summarize_motion(dump.particles, dump.particles.size(), s.rest_speed_m_per_s);
-    res.came_to_rest = quantile_slower_than(dump.particles, dump.particles.size(), s.rest_speed_m_per_s, s.rest_quantile);
     res.lift_end = res.settle_end + static_cast<double>(steps.lift) * s.dt_s;
-    res.end = res.lift_end + static_cast<double>(steps.spread) * s.dt_s;
-    res.rest_since = res.came_to_rest ? res.end : -1;  // one snapshot: at rest at the end, not since when
-    res.steps += static_cast<std::size_t>(steps.lift + steps.spread);
+    res.end = res.settle_end + static_cast<double>(ran) * s.dt_s;
+    // At rest over the five checks before it stopped: the window began four checks earlier.
+    res.rest_since = res.came_to_rest ? res.end - static_cast<double>(4 * steps.rest_check) * s.dt_s : -1;
+    res.steps += static_cast<std::size_t>(ran);
     res.wall_s += wall;
     return res;
 }

@@ -16,9 +16,9 @@ namespace demscale::slump {
 void use_liggghts(SlumpScene& scene, int ranks, const std::string& ranks_field);
 
 // What run_slump does for a scene with liggghts_ranks > 0. The deck, LIGGGHTS' log and its dump stay
-// in phases.work_dir (a temporary folder, removed, when empty). LIGGGHTS runs the whole spread
-// time (it has no rest criterion): the run counts as at rest when its last snapshot meets the
-// scene's quantile criterion (slump/motion.hpp), and its time to rest reads the spread time.
+// in phases.work_dir (a temporary folder, removed, when empty). The deck stops the spread when the
+// pile is at rest by demscale's criterion, checked every quarter of the rest duration
+// (slump/liggghts_export.hpp), or at the scene's spread time.
 // Throws std::runtime_error naming mpirun or LIGGGHTS when either is missing or fails.
 SlumpResult run_by_liggghts(const SlumpScene& scene, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                             SlumpPhases phases);

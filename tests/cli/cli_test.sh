@@ -509,6 +509,16 @@ case $case_name in
       grep -Eq -- "$line" "$work/sticky/in.slump" || { cat "$work/sticky/in.slump" >&2; fail "adhesive deck lacks /$line/"; }
     done
     ! grep -q 'Mikami\|DRY' "$work/sticky/in.slump" || fail "wet-scene note in a dry deck"
+    # --stop-at-rest: demscale's rest criterion in the deck, by hand: at most floor(0.01 n) of the n
+    # spheres at 0.001 m/s or faster, checked every 0.01 s / 4 / 2e-5 s = 125 steps, five passes.
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$work/damped.toml" --out "$work/rest" --stop-at-rest
+    allowed=$((n / 100))
+    for line in "^# spread until at rest: at most $allowed of the $n spheres at 0.001 m/s or faster" '^run 125$' \
+        "^if \"\\\$\{nf\} <= $allowed\" then" '^if "\$\{still\} >= 5" then "jump SELF rested"$' '^print "demscale: at rest at step \$\{atstep\}"$' \
+        '^dump final all custom 1 final.dump id type x y z radius vx vy vz$' '^run 0$'; do
+      grep -Eq -- "$line" "$work/rest/in.slump" || { cat "$work/rest/in.slump" >&2; fail "rest deck lacks /$line/"; }
+    done
+    grep -q '^run 10000$' "$work/rest/in.slump" && fail "the rest deck still runs the whole spread at once"
     grep -q '^fix walls [a-z]* wall/gran model hertz tangential history cohesion sjkr' "$work/sticky/in.slump" || fail "walls without SJKR" ;;
   slump_sigint_then_resume)
     # The small scene with a short settle (the test runs it twice). The interrupt comes once the

@@ -31,6 +31,10 @@ for d in "${folders[@]}"; do
   grep -Eq '^(Loop time|  [0-9]+ by [0-9]+ by [0-9]+ MPI processor grid)' "$d/log.liggghts" || fail "no LIGGGHTS log in $d"
   grep -q 'on 2 procs' "$d/log.liggghts" || fail "$d: LIGGGHTS did not run on 2 ranks"
 done
+# The decks stop at rest by demscale's criterion: the small wet piles rest well within 0.2 s.
+rested=$(grep -l '^demscale: at rest at step' "$work"/cache/liggghts/*/log.liggghts | wc -l)
+[ "$rested" -ge 3 ] || fail "only $rested of 4 LIGGGHTS runs came to rest"
+[ "$(grep -v '^#' "$runs" | awk -F, 'NR > 1 && $6 == "yes"' | wc -l)" -eq "$rested" ] || fail "came_to_rest in the runs file differs from the logs"
 # The dump measured by `pile` gives each run's own row, to the bit: the same reader and measures.
 for d in "${folders[@]}"; do
   sf=1; "$demscale" pile --scene "$src/data/scenes/small_wet.toml" --dump "$d/final.dump" --fill "$d/settled.csv" --sf 1 >"$work/pile.json" 2>/dev/null ||

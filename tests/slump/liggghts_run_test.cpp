@@ -49,4 +49,6 @@ TEST_CASE("The deck's step counts, by hand", "[slump][liggghts]") {
     const auto steps = deck_steps(s);
     CHECK(steps.lift == 10833);  // 65 mm / 0.3 m/s / 2e-5 s = 10 833.3
     CHECK(steps.spread == 10000);
+    s.rest_duration_s = 0.01;
+    CHECK(deck_steps(s).rest_check == 125);  // a quarter of 0.01 s at 2e-5 s: five checks span the rest duration
 }
