@@ -1,6 +1,7 @@
 #include "slump/liggghts_run.hpp"
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <unistd.h>
 
@@ -24,6 +25,19 @@ std::string tail(const std::string& text, int lines) {
     std::size_t at = text.size();
     for (int n = 0; n <= lines && at != std::string::npos && at > 0; ++n) at = text.rfind('\n', at - 1);
     return text.substr(at == std::string::npos ? 0 : at + 1);
+}
+
+// Whether `name` is an executable file in a folder of PATH.
+bool on_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "";
+    for (std::size_t start = 0; start <= dirs.size();) {
+        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
+        if (end > start && ::access(candidate.c_str(), X_OK) == 0) return true;
+        start = end + 1;
+    }
+    return false;
 }
 
 // A folder of its own for one run, removed at the end when it was made here.
@@ -62,12 +76,19 @@ void use_liggghts(SlumpScene& s, int ranks, const std::string& ranks_field) {
 
 SlumpResult run_by_liggghts(const SlumpScene& s, const std::function<void(const SlumpProgress&)>& progress, bool force_dt,
                             SlumpPhases phases) {
+    if (!phases.resume.empty())
+        throw InputError("--resume", phases.resume.string(), "a checkpoint of demscale's engine: a LIGGGHTS run starts again from its fill");
+    if (phases.energy_ledger) throw InputError("--energy", "given", "demscale's engine only: LIGGGHTS books no energy ledger");
+    for (const char* program : {"mpirun", "liggghts"})  // before the settle, which can take minutes
+        if (!on_path(program))
+            throw std::runtime_error(std::string(program) +
+                                     " not found on PATH: --engine liggghts needs Open MPI and LIGGGHTS (Debian: apt-get install openmpi-bin liggghts)");
     // The fill: demscale's own pour and settle of the same scene and seed.
     SlumpScene here = s;
     here.liggghts_ranks = 0;
     const WorkDir dir(phases.work_dir);
     phases.settle_only = true;
-    phases.checkpoint.clear(), phases.resume.clear();  // the settle is short; an interrupt restarts it
+    phases.checkpoint.clear();  // the settle is short; an interrupt restarts it
     SlumpResult res = run_slump(here, progress, force_dt, phases);
     const dem::Particles settled = res.final_state;
     export_liggghts(here, settled, dir.path, /*stop_at_rest=*/true);
@@ -82,8 +103,6 @@ SlumpResult run_by_liggghts(const SlumpScene& s, const std::function<void(const 
     const auto start = std::chrono::steady_clock::now();
     const CommandOutput out = run_command(argv);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (out.exit_code == 127)
-        throw std::runtime_error("mpirun not found: --engine liggghts needs Open MPI and LIGGGHTS (Debian: apt-get install openmpi-bin liggghts)");
     if (out.exit_code != 0)
         throw std::runtime_error("LIGGGHTS under mpirun exited " + std::to_string(out.exit_code) + " in " + dir.path.string() + ":\n" +
                                  tail(out.output, 6));

@@ -158,6 +158,7 @@ case $class in
     refuse '--engine = lammps: accepted demscale or liggghts' -- "$demscale" check-exponent --exponent 1 --scene "$small" --engine lammps --cache "$work/cache"
     refuse '--ranks = 2: accepted only with --engine liggghts' -- "$demscale" sweep --scene "$small" --ranks 2 --cache "$work/cache"
     refuse '--ranks = 65: accepted 1 to 64 MPI ranks' -- "$demscale" slump --scene "$small" --engine liggghts --ranks 65
+    refuse '--energy = given: accepted demscale.s engine only' -- "$demscale" slump --scene "$small" --engine liggghts --energy
     scene '[liquid]' 'wet_walls = true'
     walls='scene.toml: liquid.wet_walls = true: accepted false with --engine liggghts'
     refuse "$walls" -- "$demscale" slump --scene "$work/scene.toml" --engine liggghts

@@ -291,6 +291,15 @@ case $case_name in
       { rows++; d = $4 - s; if ((d < 0 ? -d : d) > 1e-9) ok = 0 }
       NR == 2 && !($2 > 0) { ok = 0 }  NR == 3 && $2 != 0 { ok = 0 }
       END { exit !(ok && rows == 2) }' || { cat "$work/runs.csv" >&2; fail "runs rows"; } ;;
+  liggghts_missing_exit_3)
+    # Without mpirun or LIGGGHTS on PATH a LIGGGHTS run stops before its settle, naming what to install.
+    PATH=/nonexistent "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --engine liggghts --out "$work/s" >"$work/out" 2>&1
+    rc=$?
+    [ "$rc" -eq 3 ] || { cat "$work/out" >&2; fail "exit $rc, expected 3"; }
+    grep -q 'mpirun not found on PATH: --engine liggghts needs Open MPI and LIGGGHTS (Debian: apt-get install openmpi-bin liggghts)' "$work/out" ||
+      { cat "$work/out" >&2; fail "no message naming what is missing"; }
+    ! grep -q 'settle' "$work/out" || fail "the settle ran before the check"
+    [ ! -e "$work/s/slump_profile.csv" ] || fail "a failed run wrote results" ;;
   slump_bad_scene_exit_2)
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
