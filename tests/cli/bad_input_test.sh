@@ -224,6 +224,10 @@ case $class in
     pile 'bad.dump:11:5 \(y\) = abc: accepted a finite number' --dump "$work/ok.dump" --fill "$work/bad.dump" "${run[@]}"
     pile 'short.dump:9 \(ATOMS\) = 1 rows: accepted 2 rows, as its NUMBER OF ATOMS says' --dump "$work/short.dump"
     pile 'bad.csv:3:4 \(r\) = -1: accepted a finite number > 0' --dump "$work/bad.csv"
+    printf 'ITEM: ATOMS id type x y z\n1 1 0 0 0.001\n' >"$work/noradius.dump"
+    pile 'noradius.dump:1 \(ATOMS columns\) = id type x y z: accepted a radius \(or diameter\) column' --dump "$work/noradius.dump"
+    printf "${head}1 1 0.001 nan 0 0\n2 1 0.001 0.003 0 0\n" >"$work/nan.dump"
+    pile 'nan.dump:10:4 \(z\) = nan: accepted a finite number' --dump "$work/nan.dump"
     pile '--sf = 1: accepted the S_f of the file.s spheres: their median radius 1.4 mm is S_f 1.4' --dump "$work/coarse.dump" "${run[@]}"
     pile '--sf = 0.5: accepted a scale factor >= 1' --dump "$work/ok.dump" --sf 0.5
     pile '--seed = \(not given\)' --dump "$work/ok.dump" --fill "$work/ok.dump" --append-runs "$work/runs.csv"
