@@ -11,6 +11,7 @@
 #include "core/input_error.hpp"
 #include "io/pile_file.hpp"
 #include "slump/coarse_grain.hpp"
+#include "slump/motion.hpp"
 #include "slump/pile_run.hpp"
 
 namespace demscale::cli {
@@ -81,12 +82,18 @@ int run_pile(const Options& o) {
     std::optional<io::PileFile> fill;
     if (!o.fill.empty()) fill = io::read_pile_file("--fill", o.fill, scene.material.density);
     const auto run = slump::measure_pile_run(pile.particles, fill ? &fill->particles : nullptr, scene, o.sf, "--sf");
+    // At rest by the scene's criterion in this one snapshot (slump/motion.hpp); unknown without velocities.
+    std::optional<bool> at_rest;
+    if (pile.velocities)
+        at_rest = slump::quantile_slower_than(pile.particles, pile.particles.size(), scene.rest_speed_m_per_s, scene.rest_quantile);
     if (!o.append_runs.empty()) {
         if (!o.seed) throw InputError("--seed", "(not given)", "the run's seed, an integer >= 0 (a runs row names its pile)");
-        const auto row = slump::pile_run_row(run, o.sf, run_gamma(o, fine), *o.seed, scene, "--fill");
+        auto row = slump::pile_run_row(run, o.sf, run_gamma(o, fine), *o.seed, scene, "--fill");
+        row.at_rest = at_rest.value_or(true);
         slump::append_run("--append-runs", o.append_runs, row, fine.name);
     }
-    const auto j = pile_json(o, pile, run, scene);
+    auto j = pile_json(o, pile, run, scene);
+    j["at_rest"] = at_rest ? nlohmann::ordered_json(*at_rest) : nlohmann::ordered_json();  // null: no velocities in the file
     if (format == io::Format::json) {
         std::cout << j.dump(2) << "\n";
     } else {

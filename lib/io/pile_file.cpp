@@ -124,6 +124,7 @@ PileFile parse_dump(const std::string& text, const std::string& source, double d
         }
         add_sphere(pile.particles, fields, names, columns, density,
                    [&](int col) { return at + ":" + std::to_string(col + 1); });
+        pile.velocities = columns.vx >= 0;
     }
     if (pile.snapshots == 0 && !names.empty()) pile.snapshots = 1;  // ATOMS without a TIMESTEP item
     if (names.empty()) throw InputError(source, "(no ITEM: ATOMS line)", "a LIGGGHTS or LAMMPS text dump with an 'ITEM: ATOMS ... x y z radius' section");
@@ -153,6 +154,7 @@ PileFile parse_csv_pile(const std::string& text, const std::string& source, doub
     }
     PileFile pile;
     pile.kind = "csv";
+    pile.velocities = c.vx >= 0;
     for (std::size_t k = 0; k < d.rows.size(); ++k)
         add_sphere(pile.particles, d.rows[k], d.header, c, density,
                    [&](int col) { return source + ":" + std::to_string(d.row_lines[k]) + ":" + std::to_string(col + 1); });

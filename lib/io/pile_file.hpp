@@ -19,6 +19,7 @@ struct PileFile {
     dem::Particles particles;
     std::string kind;  // "dump" or "csv"
     int snapshots = 1;  // a dump's snapshots (the last one is read)
+    bool velocities = false;  // the file gave them (vx vy vz)
 };
 
 // Throws InputError naming the file, line and column of the first bad field (a value that is not a

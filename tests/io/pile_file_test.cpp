@@ -38,6 +38,11 @@ TEST_CASE("A LAMMPS dump is read in any column order, its last snapshot", "[io][
     const auto d = io::parse_pile("ITEM: ATOMS id type xu yu zu diameter density\n1 1 0 0 0.002 0.004 1000\n", "g.dump", 2500);
     CHECK(d.particles.radius[0] == 0.002);
     CHECK(d.particles.mass[0] == Approx(sphere_mass(0.002, 1000)).epsilon(1e-14));
+    CHECK_FALSE(d.velocities);
+    // Velocities where all three columns are there (the decks demscale exports dump them).
+    const auto v = io::parse_pile("ITEM: ATOMS vz id x y z radius vy type vx\n-3 1 0 0 0.002 0.001 2 1 0.5\n", "v.dump", 2500);
+    CHECK(v.velocities);
+    CHECK(v.particles.velocity[0] == dem::Vec3(0.5, 2, -3));
 }
 
 TEST_CASE("A CSV of spheres is read in metres or millimetres, and demscale's particle state too", "[io][pile]") {
