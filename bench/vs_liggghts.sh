@@ -8,10 +8,15 @@
 # busy with other work gets no ratio. Prints every run, every pair's ratio (LIGGGHTS time over
 # demscale time) and the median per thread count, and both final piles. Each run's line also logs
 # the cross-core cost of a cache line just before it (link_ns, `demscale bench --core-link`).
-# Usage: [ROUNDS=2] [BUSY_LIMIT=0.3] bench/vs_liggghts.sh [SCENE]
+# A wet scene runs wet on both (LIGGGHTS' cohesion easo/capillary/viscous at the same surface
+# tension, liquid and viscosity; the deck's header lists what differs). SPREAD_S shortens the
+# spread to that many seconds for both engines (the wet reference scene allows 8 s for its rest
+# criterion; timed runs have none).
+# Usage: [ROUNDS=2] [BUSY_LIMIT=0.3] [SPREAD_S=0.4] bench/vs_liggghts.sh [SCENE]
 # (default data/scenes/kantro_dry.toml, 4 800 spheres: several minutes per round;
-# data/scenes/kantro_dry_large.toml, 16 600 spheres: about 16 minutes per round).
-# Last line: ratio_dry_1thread=X.XX
+# data/scenes/kantro_dry_large.toml, 16 600 spheres: about 16 minutes per round;
+# SPREAD_S=0.4 bench/vs_liggghts.sh data/scenes/kantro_wet.toml: about 6 minutes per round).
+# Last lines: ratio_KIND_2threads=X.XX, ratio_KIND_1thread=X.XX (KIND: dry or wet).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=${1:-data/scenes/kantro_dry.toml}
@@ -29,6 +34,11 @@ tools/install-deps.sh
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+if [ -n "${SPREAD_S:-}" ]; then
+  grep -q '^spread_time_s *=' "$scene" || { echo "SPREAD_S: $scene has no spread_time_s line to change" >&2; exit 2; }
+  sed "s/^spread_time_s *=.*/spread_time_s = $SPREAD_S/" "$scene" >"$work/scene.toml"
+  scene="$work/scene.toml"
+fi
 echo "scene: $scene; work folder: $work" >&2
 build/demscale export liggghts --scene "$scene" --out "$work/lig" >/dev/null 2>&1
 
@@ -66,11 +76,13 @@ for t in 1 2; do
 done
 particles=$(json "$work/ds1_1.json" particles)
 steps=$(( $(json "$work/ds1_1.json" steps) ))
-echo "particles: $particles, steps: $steps (lift and spread), liggghts $(dpkg-query -W -f='${Version}' liggghts)"
+kind=wet; grep -q '"bridge_law": "none"' "$work/ds1_1.json" && kind=dry
+echo "particles: $particles, steps: $steps (lift and spread), $kind, liggghts $(dpkg-query -W -f='${Version}' liggghts)"
+piles='"(fill_height_mm|final_height_mm|slump_over_fill_height|spread_mm|final_height_top_mm|spread_d95_mm|repose_angle_deg)"'
 echo "final pile, demscale (1 thread):"
-grep -E '"(final_height_mm|spread_d95_mm|spread_max_mm|repose_angle_deg)"' "$work/ds1_1.json"
-echo "final pile, liggghts (1 rank), measured by demscale:"
-build/demscale pile --dump "$work/lig/final1.dump" --scene "$scene" | grep -E 'height|spread|repose'
+grep -E "$piles" "$work/ds1_1.json"
+echo "final pile, liggghts (1 rank), measured by demscale from the same fill:"
+build/demscale pile --dump "$work/lig/final1.dump" --fill "$work/lig/settled.csv" --scene "$scene" | grep -E "$piles"
 echo "pairs without other work: 1 thread: ${ratios[1]:-none}; 2 threads: ${ratios[2]:-none}"
-echo "ratio_dry_2threads=$(median "${ratios[2]:-}")"
-echo "ratio_dry_1thread=$(median "${ratios[1]:-}")"
+echo "ratio_${kind}_2threads=$(median "${ratios[2]:-}")"
+echo "ratio_${kind}_1thread=$(median "${ratios[1]:-}")"
