@@ -85,6 +85,21 @@ void add_laws(nlohmann::ordered_json& j, const slump::SlumpScene& scene) {
     j["wall_bridge_law"] = scene.wet && scene.wet_walls ? slump::wall_bridge_name(scene) : "none";  // liquid.wall_bridge
 }
 
+// The run's phases from --start (read into `settled`), --resume and --energy; its checkpoint and
+// LIGGGHTS' deck, log and dump (--engine liggghts) go into --out.
+slump::SlumpPhases slump_phases(const Options& o, dem::Particles& settled) {
+    slump::SlumpPhases phases;
+    if (!o.start.empty()) {
+        settled = io::read_particle_state(o.start);
+        phases.start = &settled;
+    }
+    phases.checkpoint = std::filesystem::path(o.out_dir) / "slump.ckpt";
+    phases.work_dir = std::filesystem::path(o.out_dir) / "liggghts";
+    phases.resume = o.resume;
+    phases.energy_ledger = o.energy;
+    return phases;
+}
+
 int run_slump_command(const Options& o) {
     const auto format = io::parse_format(o.format, "--format");
     use_threads(o.threads);
@@ -96,15 +111,7 @@ int run_slump_command(const Options& o) {
     std::unique_ptr<io::VtkSeries> series;
     if (o.vtk_every > 0) series = std::make_unique<io::VtkSeries>(std::filesystem::path(o.out_dir) / "slump_series.pvd");
     dem::Particles settled;
-    slump::SlumpPhases phases;
-    if (!o.start.empty()) {
-        settled = io::read_particle_state(o.start);
-        phases.start = &settled;
-    }
-    phases.checkpoint = std::filesystem::path(o.out_dir) / "slump.ckpt";
-    phases.work_dir = std::filesystem::path(o.out_dir) / "liggghts";  // LIGGGHTS' deck, log and dump (--engine liggghts)
-    phases.resume = o.resume;
-    phases.energy_ledger = o.energy;
+    const auto phases = slump_phases(o, settled);
     slump::SlumpResult r;
     try {
         r = slump::run_slump(scene, slump_progress(series.get(), o.vtk_every), o.force_dt, phases);

@@ -148,8 +148,11 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
 }  // namespace
 
 DeckSteps deck_steps(const SlumpScene& sc) {
-    return {std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s), std::lround(sc.spread_time_s / sc.dt_s),
-            std::max(1L, std::lround(sc.rest_duration_s / 4 / sc.dt_s))};
+    const long spread = std::lround(sc.spread_time_s / sc.dt_s);
+    // At most the whole spread between checks: a rest duration longer than the spread (slump
+    // --fixed-time) then never rests, and the deck runs the whole spread.
+    const double check = std::clamp(sc.rest_duration_s / 4 / sc.dt_s, 1.0, static_cast<double>(std::max(1L, spread)));
+    return {std::lround(sc.lift_height_m / sc.lift_speed_m_per_s / sc.dt_s), spread, std::lround(check)};
 }
 
 namespace {

@@ -51,4 +51,6 @@ TEST_CASE("The deck's step counts, by hand", "[slump][liggghts]") {
     CHECK(steps.spread == 10000);
     s.rest_duration_s = 0.01;
     CHECK(deck_steps(s).rest_check == 125);  // a quarter of 0.01 s at 2e-5 s: five checks span the rest duration
+    s.rest_duration_s = 1e30;                 // slump --fixed-time: one check per spread, never five
+    CHECK(deck_steps(s).rest_check == 10000);
 }
