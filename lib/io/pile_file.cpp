@@ -101,6 +101,7 @@ PileFile parse_dump(const std::string& text, const std::string& source, double d
                 names.clear();
                 for (std::string c; h >> c;) names.push_back(c);
                 columns = dump_columns(names, at);
+                pile.velocities = columns.vx >= 0;
                 atoms = true;
                 count_line = at;
             }
@@ -124,7 +125,6 @@ PileFile parse_dump(const std::string& text, const std::string& source, double d
         }
         add_sphere(pile.particles, fields, names, columns, density,
                    [&](int col) { return at + ":" + std::to_string(col + 1); });
-        pile.velocities = columns.vx >= 0;
     }
     if (pile.snapshots == 0 && !names.empty()) pile.snapshots = 1;  // ATOMS without a TIMESTEP item
     if (names.empty()) throw InputError(source, "(no ITEM: ATOMS line)", "a LIGGGHTS or LAMMPS text dump with an 'ITEM: ATOMS ... x y z radius' section");

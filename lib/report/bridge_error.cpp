@@ -14,6 +14,7 @@
 #include "core/input_error.hpp"
 #include "core/version.hpp"
 #include "io/bridge_table_file.hpp"
+#include "stats/summary.hpp"
 
 namespace demscale::report {
 
@@ -31,12 +32,6 @@ std::string column_of(const std::string& model) {
 std::optional<double> relative_error(double model, double exact) {
     if (exact == 0.0) return model == 0.0 ? std::optional(0.0) : std::nullopt;
     return (model - exact) / exact;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
 }
 
 std::vector<double> log_space(double lo, double hi, int n) {
@@ -141,7 +136,7 @@ void summarize_models(const BridgeErrorGrid& grid, Models& models, const Errors&
         const auto over = [&](double t) { return static_cast<double>(std::count_if(a.begin(), a.end(), [t](double x) { return x > t; })) / n; };
         const auto cost = bridge::measure_evaluation_cost(*models[m], 0.05544, zero, cost_seconds_per_run);
         sum.rows.push_back({m, static_cast<double>(a.size()), a.empty() ? 0.0 : *std::max_element(a.begin(), a.end()),
-                            median(a), over(0.05), over(0.20), ra.empty() ? 0.0 : *std::max_element(ra.begin(), ra.end()),
+                            stats::median(a), over(0.05), over(0.20), ra.empty() ? 0.0 : *std::max_element(ra.begin(), ra.end()),
                             cost.ns_per_evaluation});
     }
 }
@@ -189,7 +184,7 @@ void compare_sphere_wall(const BridgeErrorGrid& grid, BridgeErrorStudy& study) {
         double rupture = 0;
         for (double e : wall_rupture_errors) rupture = std::max(rupture, std::abs(e));
         sum.rows.push_back({std::string("mikami1998 sphere-wall"), static_cast<double>(wall_errors.size()),
-                            wall_errors.empty() ? 0.0 : *std::max_element(wall_errors.begin(), wall_errors.end()), median(wall_errors),
+                            wall_errors.empty() ? 0.0 : *std::max_element(wall_errors.begin(), wall_errors.end()), stats::median(wall_errors),
                             over(0.05), over(0.20), rupture, io::not_available});
     }
 }

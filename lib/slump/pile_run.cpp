@@ -1,9 +1,9 @@
 #include "slump/pile_run.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.hpp"
+#include "stats/summary.hpp"
 
 namespace demscale::slump {
 
@@ -13,12 +13,6 @@ double total_mass(const dem::Particles& p) {
     double m = 0;
     for (double x : p.mass) m += x;
     return m;
-}
-
-double median(std::vector<double> v) {
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
 }
 
 std::string pct(double x) { return format_short(100 * x, 2) + " %"; }
@@ -32,7 +26,7 @@ std::optional<double> PileRun::slump_over_height() const {
 
 PileRun measure_pile_run(const dem::Particles& pile, const dem::Particles* fill, const SlumpScene& s, double sf, const std::string& sf_field) {
     PileRun r;
-    r.median_radius = median(pile.radius);
+    r.median_radius = stats::median(pile.radius);
     if (std::abs(r.median_radius / s.radius_m - 1) > 0.02)
         throw InputError(sf_field, format_number(sf),
                          "the S_f of the file's spheres: their median radius " + format_short(r.median_radius * 1e3) + " mm is S_f " +

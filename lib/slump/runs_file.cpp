@@ -96,14 +96,13 @@ std::vector<RunRow> parse_runs(const std::string& text, const std::string& sourc
 
 void append_run(const std::string& field, const std::string& path, const RunRow& row, const std::string& scene_label) {
     std::vector<RunRow> rows;
-    const auto table = [&] { return runs_table(rows, scene_label); };
     if (std::filesystem::exists(path)) {
         const std::string text = io::read_input_file(field, path, "a runs file (CSV)");
-        if (io::parse_csv(text, path).header != table().columns) {
+        const auto ours = runs_table({}, scene_label).columns;
+        if (io::parse_csv(text, path).header != ours) {
             std::string names;
-            for (const auto& c : table().columns) names += (names.empty() ? "" : ",") + c;
-            throw InputError(path + " (header row)", io::parse_csv(text, path).header.empty() ? "(none)" : "other columns",
-                             "a runs file as demscale writes them (" + names + "), or a new file");
+            for (const auto& c : ours) names += (names.empty() ? "" : ",") + c;
+            throw InputError(path + " (header row)", "other columns", "a runs file as demscale writes them (" + names + "), or a new file");
         }
         rows = parse_runs(text, path, 0);
         for (const auto& r : rows)
@@ -113,7 +112,7 @@ void append_run(const std::string& field, const std::string& path, const RunRow&
                                  "a run the file does not hold yet (it has this S_f, surface tension and seed)");
     }
     rows.push_back(row);
-    io::write_file_atomically(path, io::render(table(), io::Format::csv));
+    io::write_file_atomically(path, io::render(runs_table(rows, scene_label), io::Format::csv));
 }
 
 std::vector<RunRow> read_runs_file(const std::string& path, double scene_gamma) {

@@ -1,5 +1,6 @@
 #include "stats/summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <gsl/gsl_cdf.h>
 #include <numeric>
@@ -43,6 +44,13 @@ Interval difference_interval(const std::vector<double>& a, const std::vector<dou
     if (b.size() >= 2) denom += vb * vb / static_cast<double>(b.size() - 1);
     const double h = student_t_quantile(confidence, v * v / denom) * std::sqrt(v);
     return {d - h, d + h};
+}
+
+double median(std::vector<double> x) {
+    if (x.empty()) return 0.0;
+    const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
+    std::nth_element(x.begin(), mid, x.end());
+    return *mid;
 }
 
 }  // namespace demscale::stats

@@ -27,6 +27,9 @@ double student_t_quantile(double confidence, double dof);
 
 Summary summarize(const std::vector<double>& x, double confidence = 0.95);
 
+// The middle value (of an even count, the upper of the two middle ones); 0 for no values.
+double median(std::vector<double> x);
+
 // Interval of mean(b) − mean(a) (Welch); empty samples or n < 2 on both sides: a zero-width interval
 // at the difference of the means.
 Interval difference_interval(const std::vector<double>& a, const std::vector<double>& b, double confidence = 0.95);

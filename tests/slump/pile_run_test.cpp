@@ -55,6 +55,7 @@ TEST_CASE("A pile from elsewhere: slump over the fill's height of two flat colum
     CHECK_THAT(run.warnings[1], Contains("not a same-mass fill of this scene"));
     const auto row = pile_run_row(run, 1, 0.074, 3, scene, "--fill");
     CHECK(row.slump_over_height == *run.slump_over_height());
+    CHECK(row.slump_over_height == Approx(0.5).margin(0.02));  // by hand, as above
     CHECK(row.spread_over_d0 == run.final.spread / 0.038);
     CHECK(row.seed == 3);
     // Without a fill there is no slump to put in a runs row.

@@ -32,6 +32,12 @@ TEST_CASE("Summary of a known sample: mean, sample sd and the t interval by hand
     CHECK(one.ci.high == 7);
 }
 
+TEST_CASE("Median: the middle value, the upper of two middle ones, 0 for none", "[stats]") {
+    CHECK(median({3.0, 1.0, 2.0}) == 2.0);
+    CHECK(median({4.0, 1.0, 3.0, 2.0}) == 3.0);
+    CHECK(median({}) == 0.0);
+}
+
 TEST_CASE("Welch interval: equal sizes and variances give the pooled interval with 2(n - 1) degrees", "[stats]") {
     // a: mean 2, b: mean 5, both with sample variance 2.5 (n = 5): SE = sqrt(2 * 2.5 / 5) = 1, ν = 8.
     const auto d = difference_interval({0, 1, 2, 3, 4}, {3, 4, 5, 6, 7});
