@@ -38,13 +38,16 @@ bridge::BridgeCurve bridge_curve(const bridge::CurveSourceEntry& source, const C
     }
 }
 
-CohesionLiquidBridge build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat, const std::string& where) {
+template <BridgeRadius Radius>
+LiquidBridge<Radius> build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat, const std::string& where) {
     auto particle = bridge_curve(particle_curve_source(s), s, vhat, bridge::BridgeGeometry::sphere_sphere, "liquid.bridge_variant", where);
     // The wall curve goes in through the constructor, which computes the contact forces from it.
     auto wall = s.wet_walls ? std::optional(bridge_curve(wall_curve_source(s), s, vhat, bridge::BridgeGeometry::sphere_wall, "liquid.wall_bridge", where))
                             : std::nullopt;
     return {std::move(particle), largest_radius_m, s.liquid.surface_tension_n_per_m, std::move(wall), s.viscosity_pa_s, s.min_gap_ratio * radius_m, s.lubrication, vhat};
 }
+template CohesionLiquidBridge build_liquid_bridge<BridgeRadius::common>(const ContactSettings&, double, double, double, const std::string&);
+template CohesionLiquidBridgePerPair build_liquid_bridge<BridgeRadius::per_pair>(const ContactSettings&, double, double, double, const std::string&);
 
 double bridge_vhat(const ContactSettings& s, double radius_m) {
     const double mass = s.material.density * 4.0 / 3.0 * M_PI * std::pow(radius_m, 3);
@@ -52,8 +55,13 @@ double bridge_vhat(const ContactSettings& s, double radius_m) {
 }
 
 template <>
-CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, double radius_m, const std::string& where) {
-    return build_liquid_bridge(s, radius_m, radius_m, bridge_vhat(s, radius_m), where);
+CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where) {
+    return build_liquid_bridge<BridgeRadius::common>(s, sizes.radius_m, sizes.largest_radius_m, bridge_vhat(s, sizes.radius_m), where);
+}
+
+template <>
+CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where) {
+    return build_liquid_bridge<BridgeRadius::per_pair>(s, sizes.radius_m, sizes.largest_radius_m, bridge_vhat(s, sizes.radius_m), where);
 }
 
 }  // namespace demscale::dem

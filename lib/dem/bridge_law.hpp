@@ -22,17 +22,20 @@ const bridge::CurveSourceEntry& wall_curve_source(const ContactSettings& s);
 bridge::BridgeCurve bridge_curve(const bridge::CurveSourceEntry& source, const ContactSettings& s, double vhat, bridge::BridgeGeometry geometry,
                                  const std::string& field, const std::string& where = {});
 
-// The law: R = largest_radius_m for every pair (it also sets the range), the roughness gap of
-// particles of radius_m, V̂ = vhat (m, m, 1).
-CohesionLiquidBridge build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat,
+// The law: R = largest_radius_m for every pair (common) or for the range and the pairs of two
+// largest spheres (per_pair), the roughness gap of particles of radius_m, V̂ = vhat (m, m, 1).
+template <BridgeRadius Radius>
+LiquidBridge<Radius> build_liquid_bridge(const ContactSettings& s, double radius_m, double largest_radius_m, double vhat,
                                          const std::string& where = {});
 
 // V̂ = V/R³ of every bridge between particles of radius_m (m): the liquid of Yun & Park's Eq. 5
 // from the moisture content and the particle's mass.
 double bridge_vhat(const ContactSettings& s, double radius_m);
 
-// The law's builder (dem/law_builder.hpp): build_liquid_bridge with R and V̂ of radius_m.
+// The law's builder (dem/law_builder.hpp): build_liquid_bridge with these sizes and V̂ of Eq. 5.
 template <>
-CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, double radius_m, const std::string& where);
+CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where);
+template <>
+CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where);
 
 }  // namespace demscale::dem

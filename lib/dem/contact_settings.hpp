@@ -38,4 +38,11 @@ struct ContactSettings {
     double cohesion_energy_density = 0;  // k_c, J/m³, of the simplified JKR adhesion (dry scenes); 0: none
 };
 
+// The sizes a contact law is built for, m: the reference radius (the one radius, or a size
+// distribution's mass median: the roughness gap) and the largest sphere (a bridge's reach).
+struct LawSizes {
+    double radius_m;
+    double largest_radius_m;
+};
+
 }  // namespace demscale::dem

@@ -25,6 +25,8 @@ public:
     std::optional<std::string> text(const std::string& dotted) const;
     std::optional<bool> boolean(const std::string& dotted) const;
     std::optional<std::vector<double>> numbers(const std::string& dotted) const;
+    // Whether the key is given, whatever its value.
+    bool has(const std::string& dotted) const { return root_.at_path(dotted).node() != nullptr; }
 
     // Reads a number and checks it with `validate` (which throws InputError); the error is prefixed
     // with file and line. Returns `fallback` when the key is absent.

@@ -37,14 +37,14 @@ SlumpScene coarse_grained(const SlumpScene& fine, const CoarseGraining& c) {
         if (key == "velocity") s.lift_speed_m_per_s *= std::pow(c.sf, similarity::demanded_exponent(key, c.exponent, "--scale"));
     }
     // The time step keeps its margin to every limit the laws impose (the Rayleigh time grows with R̄).
-    const auto fine_limits = dem::time_step_limits(fine, fine.radius_m), coarse_limits = dem::time_step_limits(s, s.radius_m);
+    const auto fine_limits = dem::time_step_limits(fine, smallest_radius(fine)), coarse_limits = dem::time_step_limits(s, smallest_radius(s));
     for (std::size_t i = 0; i < fine_limits.size(); ++i) {
         const double dt = fine.dt_s * coarse_limits[i].seconds / fine_limits[i].seconds;
         s.dt_s = i == 0 ? dt : std::min(s.dt_s, dt);
     }
-    if (!(2 * s.radius_m < s.top_diameter_m))
+    if (!(2 * largest_radius(s) < s.top_diameter_m))
         throw InputError("--sf", format_number(c.sf),
-                         "< " + format_number(0.5 * s.top_diameter_m / fine.radius_m) +
+                         "< " + format_number(0.5 * s.top_diameter_m / largest_radius(fine)) +
                              " (a coarse particle must pass the cone's top opening)");
     return s;
 }
@@ -69,12 +69,14 @@ std::vector<std::string> geometry_warnings(const SlumpScene& s, std::size_t part
     return below(s, static_cast<double>(particles), {5, 10, 200});
 }
 
-bool passes_opening(const SlumpScene& fine, double sf) { return 2 * sf * fine.radius_m < fine.top_diameter_m; }
+bool passes_opening(const SlumpScene& fine, double sf) { return 2 * sf * largest_radius(fine) < fine.top_diameter_m; }
 
 std::vector<std::string> geometry_limits(const SlumpScene& fine, double sf) {
-    if (!passes_opening(fine, sf)) return {"particles " + format_short(2 * sf * fine.radius_m * 1e3, 3) + " mm across do not pass the top opening"};
+    if (!passes_opening(fine, sf))
+        return {(fine.sizes.monodisperse() ? "particles " : "the largest particles ") + format_short(2 * sf * largest_radius(fine) * 1e3, 3) +
+                " mm across do not pass the top opening"};
     const auto s = coarse_grained(fine, {sf, 1, {}});  // the limits depend on the radius, not on k
-    const double sphere = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3);
+    const double sphere = s.material.density * 4.0 / 3.0 * M_PI * std::pow(s.radius_m, 3) * mean_volume_ratio(s.sizes);  // the mean sphere
     return below(s, std::floor(fill_mass(s) / sphere + 0.5), s.limits);
 }
 

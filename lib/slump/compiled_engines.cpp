@@ -8,8 +8,8 @@
 
 namespace demscale::slump {
 
-CohesionChoice cohesion_choice(const SlumpScene& s) {
-    if (s.wet) return CohesionChoice::liquid_bridge;
+CohesionChoice cohesion_choice(const SlumpScene& s, bool unequal_start) {
+    if (s.wet) return s.sizes.monodisperse() && !unequal_start ? CohesionChoice::liquid_bridge : CohesionChoice::liquid_bridge_pairs;
     return dem::sjkr_part.active(s) ? CohesionChoice::sjkr : CohesionChoice::none;
 }
 
@@ -29,9 +29,10 @@ RollingEngine rolling_engine(const SlumpScene& s) {
 
 std::string engine_name(const EngineLine& line, const SlumpScene* s) {
     std::string name = std::string(line.normal->name) + ", ";
-    name += line.cohesion == CohesionChoice::liquid_bridge ? "liquid bridge"
-            : line.cohesion == CohesionChoice::sjkr        ? "SJKR adhesion"
-                                                           : "no cohesion";
+    name += line.cohesion == CohesionChoice::liquid_bridge         ? "liquid bridge"
+            : line.cohesion == CohesionChoice::liquid_bridge_pairs ? "liquid bridge of each pair's radius"
+            : line.cohesion == CohesionChoice::sjkr                ? "SJKR adhesion"
+                                                                   : "no cohesion";
     if (line.rolling == RollingEngine::none) name += ", free rolling";
     else if (line.rolling == RollingEngine::epsd) name += ", epsd rolling";
     else if (s) name += s->rolling_model == RollingModel::epsd2 ? ", epsd2 rolling" : ", constant_torque rolling";
@@ -45,8 +46,8 @@ std::string laws_label(const SlumpScene& s) {
     return s.wet ? label + "(" + std::string(dem::particle_curve_source(s).value) + ")" : label;
 }
 
-EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list) {
-    const EngineLine wanted{normal_choice(s), cohesion_choice(s), rolling_engine(s), ledger};
+EngineLine listed_engine(const SlumpScene& s, bool ledger, bool unequal_start, std::span<const EngineLine> list) {
+    const EngineLine wanted{normal_choice(s), cohesion_choice(s, unequal_start), rolling_engine(s), ledger};
     if (std::find(list.begin(), list.end(), wanted) != list.end()) return wanted;
     std::string lines;
     for (const auto& line : list) lines += (lines.empty() ? "" : "; ") + engine_name(line);

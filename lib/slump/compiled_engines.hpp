@@ -17,7 +17,9 @@
 
 namespace demscale::slump {
 
-enum class CohesionChoice { none, liquid_bridge, sjkr };
+// liquid_bridge: one R for every bridge (one radius); liquid_bridge_pairs: each pair's harmonic-mean R
+// (a size distribution, or a start state of unequal spheres).
+enum class CohesionChoice { none, liquid_bridge, liquid_bridge_pairs, sjkr };
 // none: free rolling; epsd: Ai's spring and dashpot; run_time: epsd2 or constant torque, as the scene says.
 enum class RollingEngine { none, epsd, run_time };
 
@@ -45,6 +47,8 @@ inline constexpr EngineLine compiled_engines[] = {
     {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::run_time, false},
     {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::epsd,     true},
     {&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::none,     true},
+    {&dem::hertz_part, CohesionChoice::liquid_bridge_pairs, RollingEngine::epsd, false},  // wet size distributions
+    {&dem::hertz_part, CohesionChoice::liquid_bridge_pairs, RollingEngine::epsd, true},
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::epsd,     false},
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::none,     false},
     {&dem::hertz_part, CohesionChoice::sjkr,          RollingEngine::run_time, false},
@@ -53,9 +57,10 @@ inline constexpr EngineLine compiled_engines[] = {
     {&dem::hooke_part, CohesionChoice::none,          RollingEngine::epsd,     false},  // a linear-spring dry scene
 };
 
-// The cohesion law a scene chooses: a liquid bridge when wet, SJKR adhesion when it gives a cohesion
-// energy density, none otherwise.
-CohesionChoice cohesion_choice(const SlumpScene& s);
+// The cohesion law a scene chooses: a liquid bridge when wet (each pair's R when its spheres, or
+// those of the start state, have unequal radii), SJKR adhesion when it gives a cohesion energy
+// density, none otherwise.
+CohesionChoice cohesion_choice(const SlumpScene& s, bool unequal_start = false);
 
 // The rolling engine a scene chooses.
 RollingEngine rolling_engine(const SlumpScene& s);
@@ -70,8 +75,8 @@ std::string engine_name(const EngineLine& line, const SlumpScene* s = nullptr);
 // bridge's curve source in brackets; the bench's rows.
 std::string laws_label(const SlumpScene& s);
 
-// The line that runs this scene (with the ledger or not); an InputError naming the scene's choice
-// and every line of `list` when none matches.
-EngineLine listed_engine(const SlumpScene& s, bool ledger, std::span<const EngineLine> list = compiled_engines);
+// The line that runs this scene (with the ledger or not; unequal_start: from a start state of
+// unequal spheres); an InputError naming the scene's choice and every line of `list` when none matches.
+EngineLine listed_engine(const SlumpScene& s, bool ledger, bool unequal_start = false, std::span<const EngineLine> list = compiled_engines);
 
 }  // namespace demscale::slump

@@ -14,8 +14,10 @@
 namespace demscale::slump {
 
 template <CohesionChoice C>
-using CohesionLaw = std::conditional_t<C == CohesionChoice::liquid_bridge, dem::CohesionLiquidBridge,
-                                       std::conditional_t<C == CohesionChoice::sjkr, dem::CohesionSjkr, dem::CohesionNone>>;
+using CohesionLaw = std::conditional_t<
+    C == CohesionChoice::liquid_bridge, dem::CohesionLiquidBridge,
+    std::conditional_t<C == CohesionChoice::liquid_bridge_pairs, dem::CohesionLiquidBridgePerPair,
+                       std::conditional_t<C == CohesionChoice::sjkr, dem::CohesionSjkr, dem::CohesionNone>>>;
 template <RollingEngine R>
 using RollingLaw = std::conditional_t<R == RollingEngine::none, dem::RollingNone,
                                       std::conditional_t<R == RollingEngine::epsd, dem::RollingEpsd, dem::RollingChosen>>;

@@ -13,7 +13,7 @@ bridge::BridgeCurve wall_bridge_curve(const SlumpScene& s) {
 }
 
 dem::CohesionLiquidBridge scene_bridge(const SlumpScene& s, double largest_radius) {
-    return dem::build_liquid_bridge(s, s.radius_m, largest_radius, bridge_vhat(s), s.source);
+    return dem::build_liquid_bridge<dem::BridgeRadius::common>(s, s.radius_m, largest_radius, bridge_vhat(s), s.source);
 }
 
 std::string bridge_variant_name(const SlumpScene& s) { return std::string(dem::particle_curve_source(s).value); }

@@ -38,6 +38,9 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
         {"lift_speed", s.lift_speed_m_per_s, true, into(&SlumpScene::lift_speed_m_per_s)},
         {"lift_height", s.lift_height_m, true, into(&SlumpScene::lift_height_m)},
         {"radius", s.radius_m, true, into(&SlumpScene::radius_m)},
+        {"sizes_sd", s.sizes.geometric_sd, s.sizes.lognormal(), [](SlumpScene& t, double v) { t.sizes.geometric_sd = v; }},
+        {"sizes_lower_q", s.sizes.lower_quantile, s.sizes.lognormal(), [](SlumpScene& t, double v) { t.sizes.lower_quantile = v; }},
+        {"sizes_upper_q", s.sizes.upper_quantile, s.sizes.lognormal(), [](SlumpScene& t, double v) { t.sizes.upper_quantile = v; }},
         {"fill", s.fill_height_m, true, into(&SlumpScene::fill_height_m)},
         {"fill_solid_fraction", s.fill_solid_fraction, true, into(&SlumpScene::fill_solid_fraction)},
         {"seed", static_cast<double>(s.seed), true, into(&SlumpScene::seed)},
@@ -54,6 +57,18 @@ std::vector<Line> lines(const SlumpScene& s, std::span<const dem::LawPart> parts
         {"rupture", static_cast<double>(s.bridge.rupture), s.wet,
          [](SlumpScene& t, double v) { t.bridge.rupture = as<bridge::RuptureLaw>(v); }},
     };
+    // A sieve table's classes: radius / R and mass fraction, written for the classes it has (one
+    // radius and the lognormal write none, so their keys stay as they were).
+    for (std::size_t c = 0; c < max_size_classes; ++c) {
+        const bool given = c < s.sizes.class_ratios.size() && s.sizes.sieve();
+        auto grow = [c](SlumpScene& t) {
+            if (t.sizes.class_ratios.size() <= c) t.sizes.class_ratios.resize(c + 1), t.sizes.mass_fractions.resize(c + 1);
+        };
+        l.push_back({"size_class_" + std::to_string(c), given ? s.sizes.class_ratios[c] : 0, given,
+                     [grow, c](SlumpScene& t, double v) { grow(t), t.sizes.class_ratios[c] = v; }});
+        l.push_back({"size_mass_" + std::to_string(c), given ? s.sizes.mass_fractions[c] : 0, given,
+                     [grow, c](SlumpScene& t, double v) { grow(t), t.sizes.mass_fractions[c] = v; }});
+    }
     // Each bridge curve source other than the fit has its line (bridge/curve_sources.hpp; the exact
     // curves came after format 5), written only where it acts, so that the keys of fitted scenes
     // stayed as they were. Absent means the fit.

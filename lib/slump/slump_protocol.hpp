@@ -250,7 +250,7 @@ SlumpResult run_line(const SlumpScene& s, Particles particles, bool pour, const 
                      const SlumpPhases& phases) {
     static_assert(!std::is_void_v<typename law_of<Line.normal, normal_laws>::type>, "an engine line names a normal law registered in dem::normal_laws");
     using Law = EngineLaw<Line>;
-    Law law = build_contact_law<Law>(s, s.radius_m, s.source);
+    Law law = build_contact_law<Law>(s, law_sizes(s, particles), s.source);
     ProtocolState st;
     if (pour) {  // its wall time counts in the run's
         const auto t0 = std::chrono::steady_clock::now();
@@ -284,6 +284,8 @@ extern template SlumpResult run_protocol<CohesionNone>(const SlumpScene&, const 
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 extern template SlumpResult run_protocol<CohesionLiquidBridge>(const SlumpScene&, const EngineLine&, Particles, bool,
                                                                const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
+extern template SlumpResult run_protocol<CohesionLiquidBridgePerPair>(const SlumpScene&, const EngineLine&, Particles, bool,
+                                                                      const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 extern template SlumpResult run_protocol<CohesionSjkr>(const SlumpScene&, const EngineLine&, Particles, bool,
                                                        const std::function<void(const SlumpProgress&)>&, const SlumpPhases&);
 

@@ -84,6 +84,10 @@ struct SlumpPhases {
     dem::SpatialSort spatial_sort;
 };
 
+// The sizes a run's contact law is built for: the scene's reference radius, and the largest of its
+// distribution's spheres and of `start`'s (another engine's fill may hold larger ones), m.
+dem::LawSizes law_sizes(const SlumpScene& s, const dem::Particles& start);
+
 // Throws InputError naming the scene's run.dt_s when dt exceeds a limit of the laws that act
 // (0.2 × the Rayleigh time; 0.2 × the lubrication time of a viscous bridge), unless force_dt.
 void check_slump_time_step(const SlumpScene& scene, bool force_dt);

@@ -20,7 +20,8 @@ std::map<std::string, std::vector<std::string_view>> scene_schema(std::span<cons
     std::map<std::string, std::vector<std::string_view>> schema = {
         {"scene", {"name"}},
         {"cone", {"bottom_diameter_mm", "top_diameter_mm", "height_mm", "lift_speed_m_per_s", "lift_height_mm"}},
-        {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "fill_solid_fraction", "seed", "fill"}},
+        {"particles", {"radius_mm", "density_kg_per_m3", "fill_height_mm", "fill_solid_fraction", "seed", "fill", "distribution",
+                       "class_radii_mm", "mass_fractions", "median_radius_mm", "geometric_sd", "mass_quantiles"}},
         {"floor", {"rough", "rough_diameter_mm"}},
         {"contact", {"rolling_resistance", "rolling_model"}},
         {"liquid", {"wet", "wet_walls", "bridge_variant", "wall_bridge", "rupture", "lubrication"}},
@@ -54,11 +55,82 @@ double cone_volume_below(const SlumpScene& s, double z) {  // frustum: Ï€ z (râ‚
     return M_PI * z * (r0 * r0 + r0 * rz + rz * rz) / 3;
 }
 
+double smallest_radius(const SlumpScene& s) { return s.radius_m * s.sizes.smallest_ratio(); }
+double largest_radius(const SlumpScene& s) { return s.radius_m * s.sizes.largest_ratio(); }
+
 double fill_mass(const SlumpScene& s) { return s.material.density * s.fill_solid_fraction * cone_volume_below(s, s.fill_height_m); }
 
 namespace {
 
 constexpr double mm = 1e-3;
+
+// The sizes: particles.radius_mm (one radius), or particles.distribution = "sieve" (class_radii_mm,
+// mass_fractions) or "lognormal" (median_radius_mm, geometric_sd, mass_quantiles).
+void read_sizes(const io::TomlReader& r, SlumpScene& s) {
+    const std::string kind = r.text("particles.distribution").value_or("one_radius");
+    auto where = [&](const std::string& key) { return r.where(key, key); };
+    auto refuse_other = [&](std::initializer_list<const char*> keys, const std::string& why) {
+        for (const char* key : keys)
+            if (r.has(key))
+                throw InputError(where(key), "given", "absent with particles.distribution = \"" + kind + "\" (" + why + ")");
+    };
+    if (kind == "one_radius") {
+        refuse_other({"particles.class_radii_mm", "particles.mass_fractions", "particles.median_radius_mm", "particles.geometric_sd",
+                      "particles.mass_quantiles"},
+                     "one radius: particles.radius_mm");
+        s.radius_m = r.checked("particles.radius_mm", 1.0, positive) * mm;
+        return;
+    }
+    if (kind == "sieve") {
+        refuse_other({"particles.radius_mm", "particles.median_radius_mm", "particles.geometric_sd", "particles.mass_quantiles"},
+                     "a sieve table: class_radii_mm and mass_fractions");
+        const auto radii = r.numbers("particles.class_radii_mm"), fractions = r.numbers("particles.mass_fractions");
+        if (!radii || radii->size() < 2 || radii->size() > max_size_classes)
+            throw InputError(where("particles.class_radii_mm"), radii ? std::to_string(radii->size()) + " classes" : "missing",
+                             "2 to " + std::to_string(max_size_classes) + " class radii, mm, ascending");
+        if (!fractions || fractions->size() != radii->size())
+            throw InputError(where("particles.mass_fractions"), fractions ? std::to_string(fractions->size()) + " numbers" : "missing",
+                             "one mass fraction per class radius (" + std::to_string(radii->size()) + ")");
+        double sum = 0;
+        for (std::size_t c = 0; c < radii->size(); ++c) {
+            const double x = (*radii)[c], f = (*fractions)[c];
+            if (!(x > 0 && std::isfinite(x)) || (c > 0 && !(x > (*radii)[c - 1])))
+                throw InputError(where("particles.class_radii_mm"), format_number(x), "radii > 0, mm, strictly ascending");
+            if (!(f > 0 && f <= 1)) throw InputError(where("particles.mass_fractions"), format_number(f), "(0, 1] for every class");
+            sum += f;
+        }
+        if (!(std::abs(sum - 1) <= 1e-3))
+            throw InputError(where("particles.mass_fractions"), "sum " + format_number(sum), "fractions of the mass that sum to 1 (within 0.001)");
+        // R is the mass median: the first class at which the cumulative mass reaches one half.
+        double below = 0;
+        std::size_t median = 0;
+        while (below + (*fractions)[median] / sum < 0.5) below += (*fractions)[median++] / sum;
+        s.radius_m = (*radii)[median] * mm;
+        for (std::size_t c = 0; c < radii->size(); ++c) {
+            s.sizes.class_ratios.push_back((*radii)[c] / (*radii)[median]);
+            s.sizes.mass_fractions.push_back((*fractions)[c] / sum);
+        }
+        return;
+    }
+    if (kind == "lognormal") {
+        refuse_other({"particles.radius_mm", "particles.class_radii_mm", "particles.mass_fractions"},
+                     "a lognormal: median_radius_mm, geometric_sd, mass_quantiles");
+        if (!r.number("particles.median_radius_mm"))
+            throw InputError(where("particles.median_radius_mm"), "missing", "the mass-median radius, mm, > 0");
+        s.radius_m = r.checked("particles.median_radius_mm", 1.0, positive) * mm;
+        s.sizes.geometric_sd = r.checked("particles.geometric_sd", 1.3, [](double x, const std::string& f) {
+            if (!(x >= 1 && x <= 3)) throw InputError(f, format_number(x), "[1, 3] (1: one radius)");
+        });
+        if (const auto q = r.numbers("particles.mass_quantiles")) {
+            if (q->size() != 2 || !((*q)[0] >= 0.001 && (*q)[0] < 0.5 && (*q)[1] > 0.5 && (*q)[1] <= 0.999))
+                throw InputError(where("particles.mass_quantiles"), std::to_string(q->size()) + " numbers",
+                                 "[lower, upper] with 0.001 <= lower < 0.5 < upper <= 0.999 (where the mass distribution is cut)");
+            s.sizes.lower_quantile = (*q)[0], s.sizes.upper_quantile = (*q)[1];
+        }
+        return;
+    }
+    throw InputError(where("particles.distribution"), "\"" + kind + "\"", "\"one_radius\", \"sieve\" or \"lognormal\"");
+}
 
 // [scene], [cone], [particles], [floor].
 void read_geometry_and_fill(const io::TomlReader& r, SlumpScene& s) {
@@ -69,7 +141,7 @@ void read_geometry_and_fill(const io::TomlReader& r, SlumpScene& s) {
     s.lift_speed_m_per_s = r.checked("cone.lift_speed_m_per_s", 0.3, positive);
     s.lift_height_m = r.checked("cone.lift_height_mm", 65, positive) * mm;
 
-    s.radius_m = r.checked("particles.radius_mm", 1.0, positive) * mm;
+    read_sizes(r, s);
     s.material.density = r.checked("particles.density_kg_per_m3", 2200, positive);
     s.fill_height_m = r.checked("particles.fill_height_mm", 54, positive) * mm;
     s.fill_solid_fraction = r.checked("particles.fill_solid_fraction", 0.5, [](double x, const std::string& f) {
@@ -83,6 +155,8 @@ void read_geometry_and_fill(const io::TomlReader& r, SlumpScene& s) {
         if (*f == "poured") s.fill = FillKind::poured;
         else if (*f == "lattice") s.fill = FillKind::lattice;
         else throw InputError(r.where("particles.fill", "particles.fill"), *f, "\"poured\" or \"lattice\"");
+        if (s.fill == FillKind::lattice && !s.sizes.monodisperse())
+            throw InputError(r.where("particles.fill", "particles.fill"), *f, "\"poured\" for a size distribution (a lattice holds one radius)");
     }
 
     s.rough_floor = r.boolean("floor.rough").value_or(false);
@@ -214,6 +288,11 @@ void check_consistency(const io::TomlReader& r, const SlumpScene& s) {
     if (!(2 * s.radius_m < 0.5 * s.top_diameter_m))  // the fine reference; coarse runs may go further
         throw InputError(r.where("particles.radius_mm", "particles.radius_mm"), format_number(s.radius_m / mm),
                          "< " + format_number(s.top_diameter_m / mm / 4) + " mm (a quarter of the top opening)");
+    if (!(2 * largest_radius(s) < s.top_diameter_m)) {
+        const std::string key = s.sizes.sieve() ? "particles.class_radii_mm" : "particles.geometric_sd";
+        throw InputError(r.where(key, key), "largest sphere " + format_short(largest_radius(s) / mm, 4) + " mm",
+                         "spheres that pass the cone's top opening (radius < " + format_number(s.top_diameter_m / mm / 2) + " mm)");
+    }
     // The liquid per bridge (Eq. 5, independent of R) must lie where each acting bridge curve holds.
     auto check_vhat = [&](const bridge::CurveSourceEntry& source) {
         const double vhat = bridge_vhat(s), vhat_per_moisture = vhat / s.liquid.moisture_content;

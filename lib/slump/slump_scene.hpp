@@ -10,6 +10,7 @@
 
 #include "dem/contact_settings.hpp"
 #include "dem/law_parts.hpp"
+#include "slump/size_distribution.hpp"
 
 namespace demscale::slump {
 
@@ -45,8 +46,10 @@ struct SlumpScene : dem::ContactSettings {
     // Cone (open frustum on a flat floor).
     double bottom_diameter_m = 0.038, top_diameter_m = 0.019, height_m = 0.057;
     double lift_speed_m_per_s = 0.3, lift_height_m = 0.065;
-    // Particles (monodisperse).
+    // Particles: the reference radius (the one radius, or the distribution's mass median) and the
+    // distribution's shape around it.
     double radius_m = 1e-3;
+    SizeDistribution sizes;
     double fill_height_m = 0.054;
     // The fill's solid mass is this solid fraction of the cone's volume below fill_height_m, at the
     // particles' density: the same at every S_f (fill_mass).
@@ -81,6 +84,10 @@ struct SlumpScene : dem::ContactSettings {
 // The liquid per bridge V/R³ of the scene's wet contacts: Eq. 5 with the particle mass (the same
 // for every S_f, since V scales with the mass).
 double bridge_vhat(const SlumpScene& scene);
+
+// The smallest and largest sphere's radius, m (the time step's and the bridge reach's).
+double smallest_radius(const SlumpScene& scene);
+double largest_radius(const SlumpScene& scene);
 
 // The cone's inner radius at height z above the floor, m, and the volume inside it below z, m³.
 double cone_radius_at(const SlumpScene& scene, double z);

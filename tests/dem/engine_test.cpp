@@ -167,25 +167,33 @@ TEST_CASE("Liquid bridge in the engine: library force, rupture, no reform until 
     }
 }
 
-TEST_CASE("Unequal spheres: the bridge takes the harmonic-mean radius 2 R1 R2 / (R1 + R2), by hand", "[dem][bridge]") {
-    // Mikami et al. (1998) and Willett et al. (2000) scale unequal spheres by R = 2 R1 R2 / (R1 + R2);
-    // here 1 mm and 2 mm give R = 4/3 mm, the gap measured in that R.
-    const double r1 = 1e-3, r2 = 2e-3, rh = 2 * r1 * r2 / (r1 + r2), gamma = 0.074;
+TEST_CASE("Unequal spheres: the bridge takes the harmonic-mean radius 2 R1 R2 / (R1 + R2), by hand, at two radius ratios", "[dem][bridge]") {
+    // Willett et al. (2000) scale unequal spheres by R* = 2 R1 R2 / (R1 + R2), in the force and in
+    // the rupture gap; the liquid V = V^ R*^3 keeps V^ (docs/models/liquid-bridge.md). By hand:
+    // 1 mm with 2 mm gives R* = 4/3 mm; 0.5 mm with 2 mm gives R* = 0.8 mm.
+    const double gamma = 0.074;
     const auto k = bridge::mikami_coefficients(0.05544, ContactAngle{Degrees{0}});
     using Wet = ContactLaw<NormalHertz, TangentialNone, CohesionLiquidBridgePerPair>;
-    Particles p;
-    p.add({0, 0, 0}, r1, 2200);
-    p.add({r1 + r2, 0, 0}, r2, 2200);  // touching: the bridge forms
-    Simulation sim(p, Wet(Material{}, CohesionLiquidBridgePerPair{k, r2, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r1);
-    for (double hhat : {0.0, 0.05, 0.2}) {
-        INFO("gap / R = " << hhat);
-        sim.particles().position[1] = Vec3(r1 + r2 + hhat * rh, 0, 0);
+    for (const auto& [r1, r2, rh] : {std::tuple{1e-3, 2e-3, 4.0 / 3.0 * 1e-3}, std::tuple{0.5e-3, 2e-3, 0.8e-3}}) {
+        INFO("R1 = " << r1 << ", R2 = " << r2);
+        Particles p;
+        p.add({0, 0, 0}, r1, 2200);
+        p.add({r1 + r2, 0, 0}, r2, 2200);  // touching: the bridge forms
+        Simulation sim(p, Wet(Material{}, CohesionLiquidBridgePerPair{k, r2, gamma, std::nullopt}), {}, Vec3::Zero(), 1e-6, 0.1 * r1);
+        for (double hhat : {0.0, 0.05, 0.2}) {
+            INFO("gap / R* = " << hhat);
+            sim.particles().position[1] = Vec3(r1 + r2 + hhat * rh, 0, 0);
+            sim.refresh_forces();
+            // Eq. 1 with R*: F = pi R* gamma F^(gap / R*).
+            CHECK(sim.particles().force[0].x() == Approx(M_PI * rh * gamma * bridge::mikami_fhat(k, hhat)).epsilon(1e-12));
+        }
+        sim.particles().position[1] = Vec3(r1 + r2 + 0.999 * k.hhat_rupture * rh, 0, 0);  // just inside rupture in R*
         sim.refresh_forces();
-        CHECK(sim.particles().force[0].x() == Approx(M_PI * rh * gamma * bridge::mikami_fhat(k, hhat)).epsilon(1e-12));
+        CHECK(sim.particles().force[0].x() > 0.0);
+        sim.particles().position[1] = Vec3(r1 + r2 + 1.001 * k.hhat_rupture * rh, 0, 0);  // beyond rupture in R*, within it in R2
+        sim.refresh_forces();
+        CHECK(sim.particles().force[0].x() == 0.0);
     }
-    sim.particles().position[1] = Vec3(r1 + r2 + 1.001 * k.hhat_rupture * rh, 0, 0);  // beyond rupture in R, within it in R2
-    sim.refresh_forces();
-    CHECK(sim.particles().force[0].x() == 0.0);
 }
 
 TEST_CASE("Exact (tabulated) bridges in the engine: the Young-Laplace force between spheres and to a floor, rupture at the exact gap",

@@ -18,7 +18,8 @@ TEST_CASE("Every shipped scene's laws are a compiled engine, with and without th
             INFO(entry.path().filename().string() << ": " << engine_name(line, &s));
             CHECK(line.ledger == ledger);
             CHECK((line.rolling != RollingEngine::none) == s.rolling_resistance);
-            CHECK((line.cohesion == CohesionChoice::liquid_bridge) == s.wet);
+            CHECK((line.cohesion == CohesionChoice::liquid_bridge) == (s.wet && s.sizes.monodisperse()));
+            CHECK((line.cohesion == CohesionChoice::liquid_bridge_pairs) == (s.wet && !s.sizes.monodisperse()));
             CHECK(line.normal->active(s));
         }
         ++scenes;
@@ -31,7 +32,7 @@ TEST_CASE("A scene whose laws are on no line of the list is refused, naming its 
     s.rolling_model = RollingModel::epsd2;
     const EngineLine wet_only[] = {{&dem::hertz_part, CohesionChoice::liquid_bridge, RollingEngine::epsd, false}};
     try {
-        listed_engine(s, false, wet_only);
+        listed_engine(s, false, false, wet_only);
         FAIL("a dry scene ran on a list of one wet engine");
     } catch (const InputError& e) {
         CHECK(e.value() == "the contact laws Hertz normal contact, no cohesion, epsd2 rolling");
@@ -40,8 +41,8 @@ TEST_CASE("A scene whose laws are on no line of the list is refused, naming its 
     }
     // The ledger is part of the choice: the same scene with the ledger is not the line without it.
     const EngineLine dry_plain[] = {{&dem::hertz_part, CohesionChoice::none, RollingEngine::run_time, false}};
-    CHECK_NOTHROW(listed_engine(s, false, dry_plain));
-    CHECK_THROWS_AS(listed_engine(s, true, dry_plain), InputError);
+    CHECK_NOTHROW(listed_engine(s, false, false, dry_plain));
+    CHECK_THROWS_AS(listed_engine(s, true, false, dry_plain), InputError);
     // The shipped list compiles no ledger for the run-time rolling laws.
     CHECK_THROWS_AS(listed_engine(s, true), InputError);
 }

@@ -21,7 +21,7 @@ struct CohesionSjkr {
     using StateFor = State;
     double energy_density;  // k_c, J/m³
 
-    static CohesionSjkr build(const ContactSettings& s, double, const std::string&) { return {s.cohesion_energy_density}; }
+    static CohesionSjkr build(const ContactSettings& s, const LawSizes&, const std::string&) { return {s.cohesion_energy_density}; }
     double range() const { return 0.0; }
     bool holds(const State&) const { return false; }
     bool needs_gap_velocity() const { return false; }

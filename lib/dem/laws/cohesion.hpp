@@ -4,9 +4,11 @@
 //    pulls with F = force_scale·R·γ·F̂(ĥ) (ĥ = gap/R) while the gap stays below the rupture distance
 //    ĥ_c·R, and is gone until the surfaces touch again. F̂ is a bridge::BridgeCurve: Mikami et al.'s
 //    (1998) regression or the exact Young–Laplace bridge tabulated at the scene's V̂ and θ.
-//    R is the pair's harmonic-mean radius (unequal spheres as Mikami et al. 1998), V̂ the same for
-//    every pair; F̂ at contact computed once: a touching pair costs nothing, one across a gap one
-//    curve evaluation.
+//    R is the spheres' common radius, or (per_pair, unequal spheres) the pair's harmonic mean
+//    R* = 2 R_i R_j / (R_i + R_j) (Willett et al. 2000) in the force and in the rupture gap ĥ_c R*;
+//    V̂ = V/R³ the same for every pair, so each bridge holds V = V̂ R*³ (Eq. 5 of Yun & Park 2017
+//    with the pair's R*; docs/models/liquid-bridge.md); F̂ at contact computed once: a touching pair
+//    costs nothing, one across a gap one curve evaluation.
 //    Walls take their own curve (sphere–plane) when wet, no bridge when dry.
 //    Ledger: a bridge's potential is minus the work to pull it to rupture (F̂ integrated); it
 //    appears at contact with that negative value, so each formation books the same amount as lost.
@@ -68,8 +70,8 @@ struct LiquidBridge {
     Lubrication lubrication = Lubrication::unbounded;  // the normal lubrication's form
     double vhat = 0;                                // V/R³ of every bridge (finite_volume reads it)
 
-    // The wet settings' bridge for particles of radius_m: dem/bridge_law.cpp (common radius only).
-    static LiquidBridge build(const ContactSettings& s, double radius_m, const std::string& where);
+    // The wet settings' bridge for particles of these sizes: dem/bridge_law.cpp.
+    static LiquidBridge build(const ContactSettings& s, const LawSizes& sizes, const std::string& where);
 
     // per_pair: each pair's bridge has R = its harmonic-mean radius 2 R_i R_j / (R_i + R_j) (R_i at
     // a wall; Mikami et al. 1998, Willett et al. 2000) and the same V̂ = V/R³: the liquid of Eq. 5

@@ -154,7 +154,7 @@ struct RollingChosen {
 
     RollingChosen(const Material& m, RollingModel chosen)
         : model(chosen), epsd(m), epsd2(m), constant(m), eta_r(chosen == RollingModel::constant_torque ? 0.0 : m.rolling_damping) {}
-    static RollingChosen build(const ContactSettings& s, double, const std::string&) { return {s.material, s.rolling_model}; }
+    static RollingChosen build(const ContactSettings& s, const LawSizes&, const std::string&) { return {s.material, s.rolling_model}; }
 
     template <class Lost>
     DEMSCALE_HOT Vec3 torque(const ContactPair& c, double normal_stiffness, double tangential_stiffness, double normal_force,
