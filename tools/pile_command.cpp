@@ -52,7 +52,7 @@ nlohmann::ordered_json pile_json(const Options& o, const io::PileFile& pile, con
     j["scene"] = display_path(o.scene);
     j["sf"] = o.sf;
     j["particles"] = pile.particles.size();
-    j["radius_mm"] = mm(r.median_radius);
+    j["largest_radius_mm"] = mm(r.largest_radius);
     j["fill_mass_g"] = r.fill_mass * 1e3;
     j["fill_mass_target_g"] = slump::fill_mass(s) * 1e3;
     j["pile_mass_g"] = r.pile_mass * 1e3;

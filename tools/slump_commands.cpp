@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <nlohmann/json.hpp>
 #include <omp.h>
 #include <unistd.h>
@@ -140,6 +141,16 @@ int run_slump_command(const Options& o) {
     // The thread governor's choice over the lift and spread (0 and 0 on one thread).
     j["thread_windows"] = {{"all_threads", r.windows_all_threads}, {"one_thread", r.windows_one_thread}};
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
+    j["particle_sizes"] = slump::describe(scene.sizes);
+    if (!scene.sizes.monodisperse()) {  // each size bin's share of the pile's mass, and the distribution's
+        const auto shares = slump::bin_mass_shares(scene.sizes);
+        std::vector<double> mass(shares.size(), 0.0);
+        for (std::size_t i = 0; i < r.final_state.size(); ++i)
+            mass[slump::size_bin(scene.sizes, r.final_state.radius[i] / scene.radius_m)] += r.final_state.mass[i];
+        const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
+        for (auto& m : mass) m /= total;
+        j["size_bins"] = {{"distribution_mass_fractions", shares}, {"pile_mass_fractions", mass}};
+    }
     add_laws(j, scene);
     j["pour_time_s"] = r.pour_time;
     j["fill_mass_g"] = r.fill.mass * 1e3;

@@ -29,6 +29,7 @@ struct TableConfig {
     std::vector<double> exponents{1.0, 3.0};    // candidate k in γ̄ = γ·S_f^k
     double curve_hhat_max = 0.5;
     int curve_points = 101;
+    std::string sizes_note;                     // a scene's size distribution, for the table's notes (empty: one radius)
 };
 
 // Throws InputError "FILE:LINE: key = value: accepted …" for a missing file, malformed TOML,

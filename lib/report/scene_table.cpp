@@ -15,7 +15,11 @@ io::Table scene_table(const slump::SlumpScene& s, const std::string& label, std:
                       format_short(s.bottom_diameter_m * 1e3) + " / " + format_short(s.top_diameter_m * 1e3), std::string("mm")});
     add("cone height", s.height_m * 1e3, "mm");
     add("cone lift speed", s.lift_speed_m_per_s, "m/s");
-    add("particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
+    add(s.sizes.monodisperse() ? "particle radius R (physical, S_f = 1)" : "mass-median particle radius R (physical, S_f = 1)", s.radius_m * 1e3, "mm");
+    if (!s.sizes.monodisperse()) {
+        say("particle sizes", slump::describe(s.sizes) + "; coarse-grained: every size times S_f");
+        say("bridges between unequal spheres", s.wet ? "R* = 2 R1 R2 / (R1 + R2) in force and rupture, V = V^ R*^3 (Willett et al. 2000)" : "none (dry)");
+    }
     add("particle density", s.material.density, "kg/m^3");
     add("fill height", s.fill_height_m * 1e3, "mm");
     say("fill", s.fill == slump::FillKind::poured ? "poured in batches, cut to the scene's mass" : "hcp lattice, cut to the scene's mass");

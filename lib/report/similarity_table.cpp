@@ -117,6 +117,7 @@ io::Table similarity_table(const io::TableConfig& c, const std::vector<double>& 
                                                                           : bridge::MikamiVariant::mikami1998;
     const auto k_other = bridge::mikami_coefficients(p.physical.vhat, c.liquid.contact_angle, other);
     const double f_other = bridge::bridge_force_newton(k_other, bridge::mikami_fhat(k_other, 0.0), p.physical.radius_m, gamma);
+    if (!c.sizes_note.empty()) t.notes.push_back(c.sizes_note);
     t.notes.push_back("variant check at R = " + format_number(c.physical_radius_m * 1e3) + " mm, contact: " +
                       std::string(to_string(c.bridge.variant)) + " F_C = " + format_short(f_phys) + " N, " +
                       std::string(to_string(other.variant)) + " F_C = " + format_short(f_other) + " N (ratio " +

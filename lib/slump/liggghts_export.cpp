@@ -137,6 +137,20 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
                  : std::string("")),
         "liquid: carried per particle and shared evenly again at rupture (equal spheres: nothing moves); demscale gives every bridge V",
     };
+    if (!sc.sizes.monodisperse()) {
+        // Unequal spheres: LIGGGHTS scales the force by sqrt(Ri Rj) and fills a bridge from each
+        // sphere's own liquid; demscale takes R* = 2 Ri Rj / (Ri + Rj) and V = V^ R*^3. Both at the
+        // scene's smallest and largest spheres:
+        const double r1 = smallest_radius(sc), r2 = largest_radius(sc), r_star = 2 * r1 * r2 / (r1 + r2);
+        auto given = [&](double ri, double rj) {  // the liquid sphere i gives the bridge with j
+            return content * 4.0 / 3.0 * std::numbers::pi * ri * ri * ri * (1 - std::sqrt(1 - rj * rj / ((ri + rj) * (ri + rj)))) / 2;
+        };
+        const double v_liggghts = given(r1, r2) + given(r2, r1), v_demscale = vhat * r_star * r_star * r_star;
+        w.notes.push_back("unequal spheres (" + describe(sc.sizes) + "): between the smallest and largest, " + format_short(r1 * 1e3, 3) +
+                          " and " + format_short(r2 * 1e3, 3) + " mm, LIGGGHTS' force scale pi gamma sqrt(Ri Rj) is " +
+                          pct(std::sqrt(r1 * r2) / r_star - 1) + " against demscale's pi gamma R*, R* = 2 Ri Rj / (Ri + Rj); its bridge "
+                          "holds each sphere's share of its own liquid, " + pct(v_liggghts / v_demscale - 1) + " against demscale's V^ R*^3");
+    }
     if (sc.wet_walls) w.notes.push_back("walls DRY here: easo/capillary/viscous refuses walls; the demscale scene has wet walls");
     // A curve source with no LIGGGHTS words of its own has no equivalent there: said, not hidden.
     if (const auto& source = dem::particle_curve_source(sc); source.liggghts.empty())

@@ -1,9 +1,9 @@
 #include "slump/pile_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.hpp"
-#include "stats/summary.hpp"
 
 namespace demscale::slump {
 
@@ -26,11 +26,14 @@ std::optional<double> PileRun::slump_over_height() const {
 
 PileRun measure_pile_run(const dem::Particles& pile, const dem::Particles* fill, const SlumpScene& s, double sf, const std::string& sf_field) {
     PileRun r;
-    r.median_radius = stats::median(pile.radius);
-    if (std::abs(r.median_radius / s.radius_m - 1) > 0.02)
+    // The largest sphere: one radius, a sieve's largest class or a lognormal's cut, in any pile of
+    // the scene (a median would move with the mix of a distribution's classes).
+    r.largest_radius = *std::max_element(pile.radius.begin(), pile.radius.end());
+    const double expected = largest_radius(s);
+    if (std::abs(r.largest_radius / expected - 1) > 0.02)
         throw InputError(sf_field, format_number(sf),
-                         "the S_f of the file's spheres: their median radius " + format_short(r.median_radius * 1e3) + " mm is S_f " +
-                             format_short(r.median_radius / s.radius_m * sf, 3) + " of the scene's " + format_short(s.radius_m / sf * 1e3) + " mm");
+                         "the S_f of the file's spheres: their largest radius " + format_short(r.largest_radius * 1e3) + " mm is S_f " +
+                             format_short(r.largest_radius / expected * sf, 3) + " of the scene's " + format_short(expected / sf * 1e3) + " mm");
     r.final = measure_pile(pile, s);
     r.pile_mass = total_mass(pile);
     r.fill_mass = r.pile_mass;

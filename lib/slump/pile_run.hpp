@@ -20,7 +20,7 @@ struct PileRun {
     std::optional<double> fill_height;  // m, the fill's surface height; none without a fill
     double fill_mass = 0;               // kg: the fill's spheres (the pile's when no fill is given)
     double pile_mass = 0;               // kg
-    double median_radius = 0;           // m, of the pile's spheres
+    double largest_radius = 0;          // m, of the pile's spheres
     std::vector<std::string> warnings;  // mass lost between fill and pile, a fill unlike the scene's
 
     // Slump over fill height; none without a fill.

@@ -18,6 +18,10 @@ io::TableConfig similarity_inputs(const SlumpScene& s) {
     c.liquid = s.liquid;
     c.bridge = s.bridge;
     c.exponents = s.exponents;
+    if (!s.sizes.monodisperse())
+        c.sizes_note = "sizes: " + describe(s.sizes) +
+                       ". The rows are at the mass-median radius R; every size scales by S_f alike, so each ratio (a power of S_f) "
+                       "holds for every size, and for a bridge between unequal spheres, whose R* = 2 R1 R2 / (R1 + R2) scales by S_f too";
     return c;
 }
 

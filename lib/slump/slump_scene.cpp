@@ -85,9 +85,9 @@ void read_sizes(const io::TomlReader& r, SlumpScene& s) {
         refuse_other({"particles.radius_mm", "particles.median_radius_mm", "particles.geometric_sd", "particles.mass_quantiles"},
                      "a sieve table: class_radii_mm and mass_fractions");
         const auto radii = r.numbers("particles.class_radii_mm"), fractions = r.numbers("particles.mass_fractions");
-        if (!radii || radii->size() < 2 || radii->size() > max_size_classes)
+        if (!radii || radii->empty() || radii->size() > max_size_classes)
             throw InputError(where("particles.class_radii_mm"), radii ? std::to_string(radii->size()) + " classes" : "missing",
-                             "2 to " + std::to_string(max_size_classes) + " class radii, mm, ascending");
+                             "1 to " + std::to_string(max_size_classes) + " class radii, mm, ascending (one class: one radius)");
         if (!fractions || fractions->size() != radii->size())
             throw InputError(where("particles.mass_fractions"), fractions ? std::to_string(fractions->size()) + " numbers" : "missing",
                              "one mass fraction per class radius (" + std::to_string(radii->size()) + ")");

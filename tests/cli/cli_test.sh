@@ -195,6 +195,51 @@ case $case_name in
     err=$(grep '"energy_balance_error"' "$work/out" | sed 's/.*: *//; s/,//')
     awk -v e="$err" 'BEGIN { exit !(e < 0.03 && e > -0.03) }' || fail "energy balance error $err"
     head -2 "$work/e/slump_history.csv" | grep -q 'lost_friction_j,lost_rolling_j,lost_bridges_j' || fail "history lacks the ledger" ;;
+  polydisperse_scene)
+    # A wet lognormal scene (data/scenes/small_wet_lognormal.toml): the pile keeps each size bin's
+    # share of the mass, comes to rest, its ledger balances; a zero-width distribution (sigma_g = 1,
+    # or a sieve of one class) is the one-radius run to the bit; check-exponent, report and export
+    # take the scene, the fills of every S_f weigh the same, and the report and deck say the sizes.
+    poly="$src/data/scenes/small_wet_lognormal.toml"
+    "$demscale" slump --scene "$poly" --format json --energy --no-png --out "$work/p" >"$work/p.json" 2>"$work/p.err" ||
+      { cat "$work/p.err" >&2; fail "the polydisperse slump failed"; }
+    json=$(tr -d ' \n' <"$work/p.json")
+    grep -q '"particle_sizes":"lognormalbymass,sigma_g=1.2' <<<"$json" || fail "sizes not said"
+    grep -q '"came_to_rest":true' <<<"$json" || fail "the polydisperse pile did not rest"
+    grep -q '"contact_laws":\["hertz","mindlin","liquid_bridge"\]' <<<"$json" || fail "contact laws not named"
+    # Each of the 8 equal-mass bins near its share: 0.05 is about 3 standard errors of a bin of
+    # 0.125 among these 480 spheres (the sampling test is pour_test.cpp's, with the errors written out).
+    shares=$(sed 's/.*"distribution_mass_fractions":\[\([^]]*\)\].*/\1/' <<<"$json")
+    pile=$(sed 's/.*"pile_mass_fractions":\[\([^]]*\)\].*/\1/' <<<"$json")
+    awk -v a="$shares" -v b="$pile" 'BEGIN { n = split(a, e, ","); m = split(b, p, ",");
+      if (n != 8 || m != 8) exit 1; for (i = 1; i <= n; ++i) if (p[i] - e[i] > 0.05 || e[i] - p[i] > 0.05) exit 1 }' ||
+      fail "the pile's size bins $pile against $shares"
+    err=$(sed 's/.*"energy_balance_error":\([^,}]*\).*/\1/' <<<"$json")
+    awk -v e="$err" 'BEGIN { exit !(e < 0.03 && e > -0.03) }' || fail "energy balance error $err"
+    "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --no-png --out "$work/one" >/dev/null 2>&1 || fail "one radius did not run"
+    for width in 'distribution = "lognormal"\nmedian_radius_mm = 2.2\ngeometric_sd = 1' \
+                 'distribution = "sieve"\nclass_radii_mm = [2.2]\nmass_fractions = [1]'; do
+      sed "s/^radius_mm = 2.2/$width/" "$src/data/scenes/small_wet.toml" >"$work/zero.toml"
+      grep -q 'distribution' "$work/zero.toml" || fail "the zero-width scene was not written"
+      rm -rf "$work/zero"
+      "$demscale" slump --scene "$work/zero.toml" --no-png --out "$work/zero" >/dev/null 2>&1 || fail "zero width did not run"
+      for f in slump_particles.csv slump_history.csv slump_profile.csv; do
+        cmp <(grep -v '^#' "$work/one/$f") <(grep -v '^#' "$work/zero/$f") || fail "zero width ($width) differs from one radius in $f"
+      done
+    done
+    "$demscale" check-exponent --scene "$poly" --exponent 1 --sf 1.4 --seeds 2 --no-png --cache "$work/cache" --out "$work/ce" \
+      --format json >"$work/ce.json" 2>"$work/ce.err"
+    rc=$?
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || [ "$rc" -eq 4 ] || { cat "$work/ce.err" >&2; fail "check-exponent exit $rc"; }
+    # The fills of every S_f weigh the same: each ensemble's fill_mass_ratio within 1 %.
+    ratios=$(tr -d ' \n' <"$work/ce.json" | grep -o '"fill_mass_ratio":[^,}]*' | sed 's/.*://')
+    [ "$(wc -w <<<"$ratios")" -ge 2 ] || fail "no fill masses in check-exponent's JSON"
+    for r in $ratios; do awk -v r="$r" 'BEGIN { exit !(r > 0.99 && r < 1.01) }' || fail "fill mass ratio $r"; done
+    expect 0 'wrote .*report.html' -- "$demscale" report --quick --scene "$poly" --cache "$work/cache" --out "$work/rep"
+    grep -q 'particle sizes.*lognormal by mass' "$work/rep/report.md" || fail "the report's scene table lacks the sizes"
+    grep -q 'every size scales by S_f alike' "$work/rep/report.md" || fail "the similarity table does not say the sizes"
+    expect 0 'wrote' -- "$demscale" export liggghts --scene "$poly" --out "$work/deck"
+    grep -q '^# unequal spheres' "$work/deck/in.slump" || fail "the deck does not list the unequal-sphere differences" ;;
   slump_exact_bridges)
     # Exact (tabulated) bridges between spheres and to wet walls: the run names both laws and warns
     # of nothing; with Mikami's wall fit chosen instead it warns of its excess over the exact bridge.

@@ -68,7 +68,7 @@ TEST_CASE("A pile from elsewhere is measured at the S_f of its spheres", "[slump
     const SlumpScene fine;
     const auto coarse_pile = column(1.4e-3, 5, 15e-3);
     CHECK_THROWS_WITH(measure_pile_run(coarse_pile, nullptr, fine, 1, "--sf"),
-                      Contains("--sf = 1: accepted the S_f of the file's spheres: their median radius 1.4 mm is S_f 1.4 of the scene's 1 mm"));
+                      Contains("--sf = 1: accepted the S_f of the file's spheres: their largest radius 1.4 mm is S_f 1.4 of the scene's 1 mm"));
     CHECK_NOTHROW(measure_pile_run(coarse_pile, nullptr, coarse_grained(fine, {1.4, 1, {}}), 1.4, "--sf"));
 }
 

@@ -25,6 +25,10 @@ void require_same_run(const SlumpScene& a, const SlumpScene& b) {
     CHECK(a.lift_speed_m_per_s == b.lift_speed_m_per_s);
     CHECK(a.lift_height_m == b.lift_height_m);
     CHECK(a.radius_m == b.radius_m);
+    CHECK(a.sizes.class_ratios == b.sizes.class_ratios);
+    CHECK(a.sizes.mass_fractions == b.sizes.mass_fractions);
+    CHECK(a.sizes.geometric_sd == b.sizes.geometric_sd);
+    if (a.sizes.lognormal()) CHECK((a.sizes.lower_quantile == b.sizes.lower_quantile && a.sizes.upper_quantile == b.sizes.upper_quantile));
     CHECK(a.fill_height_m == b.fill_height_m);
     CHECK(a.seed == b.seed);
     CHECK(a.fill == b.fill);
@@ -65,7 +69,8 @@ void require_same_run(const SlumpScene& a, const SlumpScene& b) {
 
 TEST_CASE("Scene text: every shipped scene and its variants read back as the same run", "[slump][scene_text]") {
     std::vector<SlumpScene> scenes;
-    for (const char* name : {"kantro_wet.toml", "kantro_dry.toml", "kantro_dry_large.toml", "small_wet.toml", "repose_rough.toml"}) {
+    for (const char* name : {"kantro_wet.toml", "kantro_dry.toml", "kantro_dry_large.toml", "small_wet.toml", "repose_rough.toml",
+                             "small_wet_lognormal.toml"}) {
         const auto s = shipped(name);
         scenes.push_back(s);
         scenes.push_back(coarse_grained(s, {2.74, 3, {}}));  // S_f and k give numbers like 0.0001*2.74^3
@@ -89,6 +94,13 @@ TEST_CASE("Scene text: every shipped scene and its variants read back as the sam
     unbounded.lubrication = dem::Lubrication::unbounded;
     scenes.push_back(unbounded);
     CHECK(scene_key(unbounded) != scene_key(shipped("kantro_wet.toml")));
+    auto sieve = shipped("small_wet.toml");  // a sieve table: a line per class, and its own key
+    sieve.sizes.class_ratios = {0.6, 1.0, 1.3, 1.31}, sieve.sizes.mass_fractions = {0.1, 0.4, 0.3, 0.2};
+    scenes.push_back(sieve);
+    CHECK(scene_key(sieve) != scene_key(shipped("small_wet.toml")));
+    CHECK(scene_key(shipped("small_wet_lognormal.toml")) != scene_key(shipped("small_wet.toml")));
+    // One radius writes no size line: its key stays what it was before distributions.
+    CHECK(scene_text(shipped("small_wet.toml")).find("size") == std::string::npos);
     for (const auto& s : scenes) {
         INFO(s.name << " R = " << s.radius_m);
         const auto back = scene_from_text(scene_text(s), "task.scene");
