@@ -130,6 +130,10 @@ case $class in
     scene_commands 'scene.toml: liquid.bridge_variant = "table" at V\^ = 0.05556, theta = 85 deg: accepted .*concave bridge, or bridge_variant = "mikami1998"' "$work/scene.toml" no-pile
     scene '[liquid]' 'wet_walls = true' 'contact_angle_deg = 85'
     scene_commands 'scene.toml: liquid.wall_bridge = "table" at .*: accepted .*concave bridge, or wall_bridge = "mikami1998"' "$work/scene.toml" no-pile
+    scene '[particles]' 'distribution = "lognormal"' 'median_radius_mm = 1' 'geometric_sd = 0.8'
+    scene_commands 'scene.toml:4: particles.geometric_sd = 0.8: accepted \[1, 3\] \(1: one radius\)' "$work/scene.toml"
+    scene '[particles]' 'distribution = "sieve"' 'class_radii_mm = [1.0, 0.8]' 'mass_fractions = [0.5, 0.5]'
+    scene_commands 'scene.toml:3: particles.class_radii_mm = 0.8: accepted radii > 0, mm, strictly ascending' "$work/scene.toml"
     scene '[contact]' 'rolling_model = "sideways"'
     scene_commands 'scene.toml:2: contact.rolling_model = sideways: accepted "epsd", "epsd2" or "constant_torque"' "$work/scene.toml"
     scene '[contact]' 'rolling_damping = 1.5'
@@ -198,6 +202,10 @@ case $class in
     scene_commands 'scene.toml:2: cone.top_diameter_mm = 40: accepted < cone.bottom_diameter_mm' "$work/scene.toml"
     scene '[floor]' 'rough = true' 'rough_diameter_mm = 30'
     scene_commands 'scene.toml:3: floor.rough_diameter_mm = 30: accepted >= cone.bottom_diameter_mm = 38' "$work/scene.toml"
+    scene '[particles]' 'distribution = "sieve"' 'radius_mm = 1' 'class_radii_mm = [0.8, 1.0]' 'mass_fractions = [0.5, 0.5]'
+    scene_commands 'scene.toml:3: particles.radius_mm = given: accepted absent with particles.distribution = "sieve"' "$work/scene.toml"
+    scene '[particles]' 'distribution = "lognormal"' 'median_radius_mm = 4' 'geometric_sd = 2'
+    scene_commands 'scene.toml:4: particles.geometric_sd = largest sphere 12.51 mm: accepted spheres that pass the cone.s top opening \(radius < 9.5 mm\)' "$work/scene.toml"
     scene '[particles]' 'fill_height_mm = 60'
     scene_commands 'scene.toml:2: particles.fill_height_mm = 60: accepted <= cone.height_mm = 57' "$work/scene.toml"
     # Earlier results in the --out folder survive a refused run untouched.
@@ -228,7 +236,7 @@ case $class in
     pile 'noradius.dump:1 \(ATOMS columns\) = id type x y z: accepted a radius \(or diameter\) column' --dump "$work/noradius.dump"
     printf "${head}1 1 0.001 nan 0 0\n2 1 0.001 0.003 0 0\n" >"$work/nan.dump"
     pile 'nan.dump:10:4 \(z\) = nan: accepted a finite number' --dump "$work/nan.dump"
-    pile '--sf = 1: accepted the S_f of the file.s spheres: their median radius 1.4 mm is S_f 1.4' --dump "$work/coarse.dump" "${run[@]}"
+    pile '--sf = 1: accepted the S_f of the file.s spheres: their largest radius 1.4 mm is S_f 1.4' --dump "$work/coarse.dump" "${run[@]}"
     pile '--sf = 0.5: accepted a scale factor >= 1' --dump "$work/ok.dump" --sf 0.5
     pile '--seed = \(not given\)' --dump "$work/ok.dump" --fill "$work/ok.dump" --append-runs "$work/runs.csv"
     pile '--fill = \(not given\)' --dump "$work/ok.dump" "${run[@]}"
