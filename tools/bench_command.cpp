@@ -111,6 +111,12 @@ int run_size_sweep(const Options& o) {
                                "the work per particle, larger in deeper beds; contact_steps_per_s = particle_steps_per_s x contacts_per_particle"}};
     t.columns = {"laws", "order", "particles", "steps", "wall_s", "particle_steps_per_s", "rate_vs_smallest",
                  "contacts_per_particle", "contact_steps_per_s", "contact_rate_vs_smallest", "peak_bytes_per_particle"};
+    // The engine's own memory by consumer at the largest size, lattice order: where the bytes go.
+    io::Table memory;
+    memory.title = "The engine's memory by consumer at the largest size (lattice order, the end of the last run)";
+    memory.metadata = {{"bytes", "what each consumer's containers hold (their capacities) over the particles; the process's peak "
+                                 "(peak_bytes_per_particle above) adds the fill, the copies a run returns and the allocator's slack"}};
+    memory.columns = {"consumer", "laws", "particles", "bytes_per_particle", "share_pct"};
     for (const bool wet : {false, true})
         for (const bool shuffled : {false, true}) {
             auto s = scene;
@@ -131,9 +137,19 @@ int run_size_sweep(const Options& o) {
                                   per_contact ? io::Cell(point.contact_steps_per_s) : none,
                                   per_contact ? io::Cell(point.contact_steps_per_s / smallest_per_contact) : none,
                                   point.peak_bytes_per_particle > 0 ? io::Cell(point.peak_bytes_per_particle) : io::Cell(std::string("-"))});
+                if (!shuffled && n == sizes.back()) {
+                    double total = 0;
+                    for (const auto& item : point.engine_memory) total += static_cast<double>(item.bytes);
+                    for (const auto& item : point.engine_memory)
+                        memory.rows.push_back({item.name, slump::laws_label(s), double(point.particles),
+                                               static_cast<double>(item.bytes) / static_cast<double>(point.particles),
+                                               total > 0 ? 100 * static_cast<double>(item.bytes) / total : 0.0});
+                    memory.rows.push_back({std::string("all"), slump::laws_label(s), double(point.particles),
+                                           total / static_cast<double>(point.particles), 100.0});
+                }
             }
         }
-    std::cout << io::render(t, io::parse_format(o.format, "--format"));
+    std::cout << join_tables({t, memory}, io::parse_format(o.format, "--format"));
     return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/memory_use.hpp"
 #include "dem/particles.hpp"
 
 namespace demscale::dem {
@@ -48,6 +49,8 @@ public:
         builds_ = builds;
     }
     double cutoff_gap() const { return skin_; }
+    // The list's pairs and the positions at its build, bytes.
+    std::size_t bytes() const { return capacity_bytes(pairs_) + capacity_bytes(built_at_); }
 
 private:
     double skin_;

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/memory_use.hpp"
 #include "dem/buckets.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
@@ -243,6 +244,16 @@ public:
     }
 
     std::size_t size() const { return pairs_.size(); }
+
+    // What the pairs hold, by consumer (bytes).
+    void add_memory(std::vector<MemoryItem>& out) const {
+        out.push_back({"pair list (i, j)", capacity_bytes(pairs_)});
+        out.push_back({"pair histories", capacity_bytes(states_) + capacity_bytes(engaged_)});
+        out.push_back({"pair shapes (R*, m*, ...)", capacity_bytes(shapes_)});
+        out.push_back({"pair results (force, torques)", capacity_bytes(results_)});
+        out.push_back({"pair incidence and shares", capacity_bytes(incidence_start_) + capacity_bytes(incidence_) + capacity_bytes(shares_.runs) +
+                                                         capacity_bytes(shares_.direct) + capacity_bytes(shares_.gathering) + capacity_bytes(shares_.spheres)});
+    }
 
 private:
     static_assert(std::is_standard_layout_v<LawState>);  // written as bytes

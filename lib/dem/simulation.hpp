@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/memory_use.hpp"
 #include "core/input_error.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/contact_law.hpp"
@@ -170,6 +171,20 @@ public:
         neighbors_.restore(std::move(built_at), std::move(listed), builds);
         wall_contacts_.read(r, p_.size());
         index_particles();
+    }
+
+    // The engine's memory by consumer (its containers' capacities), bytes: the benchmark's breakdown.
+    std::vector<MemoryItem> memory() const {
+        std::vector<MemoryItem> out = {
+            {"spheres (position, velocity, spin, force, torque, radius, mass, ...)",
+             capacity_bytes(p_.position) + capacity_bytes(p_.velocity) + capacity_bytes(p_.angular_velocity) + capacity_bytes(p_.force) +
+                 capacity_bytes(p_.torque) + capacity_bytes(p_.radius) + capacity_bytes(p_.mass) + capacity_bytes(p_.inertia) +
+                 capacity_bytes(p_.species) + capacity_bytes(p_.fixed) + capacity_bytes(kick_)},
+            {"neighbour list", neighbors_.bytes()},
+        };
+        pair_contacts_.add_memory(out);
+        wall_contacts_.add_memory(out);
+        return out;
     }
 
 private:

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_use.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/contact_geometry.hpp"
 #include "dem/cross.hpp"
@@ -206,6 +207,13 @@ public:
         for (auto& states : state_) r.array(states);
         for (auto& e : engaged_) e.assign(particles, 1);
         stale_ = true;
+    }
+
+    // What the wall contacts hold, by consumer (bytes).
+    void add_memory(std::vector<MemoryItem>& out) const {
+        out.push_back({"wall histories (per wall, per sphere)", capacity_bytes(state_) + capacity_bytes(engaged_)});
+        out.push_back({"wall shapes and near lists", capacity_bytes(shapes_) + capacity_bytes(near_) + capacity_bytes(near_any_) +
+                                                          capacity_bytes(near_list_) + capacity_bytes(split_)});
     }
 
 private:

@@ -81,7 +81,7 @@ SizePoint time_size(const SlumpScene& scene, double particles, int steps, bool s
         const SlumpResult longer = stepped(s, start, 3 * steps);
         point.steps += longer.steps - shorter.steps;
         point.wall_s += longer.wall_s - shorter.wall_s;
-        if (k + 1 == pairs) point.contacts_per_particle = contacts_per_particle(longer.final_state);
+        if (k + 1 == pairs) point.contacts_per_particle = contacts_per_particle(longer.final_state), point.engine_memory = longer.memory;
     }
     const auto peak = peak_resident_bytes();
     if (point.wall_s > 0) {

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 
+#include "core/memory_use.hpp"
 #include "dem/particles.hpp"
 #include "slump/slump_scene.hpp"
 
@@ -25,6 +26,7 @@ struct SizePoint {
     double contacts_per_particle = 0;  // sphere-sphere contacts (overlapping pairs) per sphere, at the end
     double contact_steps_per_s = 0;    // contacts × steps / s: the rate per unit of contact work
     double peak_bytes_per_particle = 0;  // 0: the kernel does not say
+    std::vector<MemoryItem> engine_memory;  // the engine's own, by consumer, at the end of the last run (bytes)
 };
 
 // The scene with its cone, lift height, fill height and rough floor scaled by `factor`.

@@ -239,6 +239,7 @@ SlumpResult run_with(const SlumpScene& s, Law law, Particles particles, const st
     res.rest_since = res.came_to_rest ? st.still_since : -1;
     res.end = sim.time();
     res.windows_all_threads = sim.governor().windows(true), res.windows_one_thread = sim.governor().windows(false);
+    res.memory = sim.memory();
     finish(res, sim.in_input_order(), st, s, sim.steps(), wall_time());
     return res;
 }

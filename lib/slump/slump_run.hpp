@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_use.hpp"
 #include "dem/energy.hpp"
 #include "dem/particles.hpp"
 #include "dem/spatial_order.hpp"
@@ -46,6 +47,7 @@ struct SlumpResult {
     double pour_time = 0;               // simulated time spent pouring (poured fills), s
     std::size_t pour_steps = 0;
     double rest_since = -1;             // s: when the final rest window began; −1: not at rest
+    std::vector<MemoryItem> memory;     // the engine's at the run's end, by consumer (bench --dem --sizes)
     MotionSummary motion;               // what still moved at the end
     // The thread governor's windows (dem/thread_governor.hpp) of the lift and spread: on all the
     // run's threads and on one; both 0 when it had one thread. Not cached (speed, not physics).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <omp.h>
 #include <random>
 #include <sstream>
@@ -663,4 +664,28 @@ TEST_CASE("Every touching pair acts: the engine's forces on a packed cluster are
     }
     CHECK(touching > 600);  // many blocks of 32 listed pairs, each with touching ones
     CHECK(largest > 0);
+}
+
+TEST_CASE("The engine's memory by consumer covers, at least, what its spheres and listed pairs hold by hand", "[dem][memory]") {
+    // By hand: a sphere holds 5 vectors of 3 doubles, 3 doubles, an int and a byte (149 B) and its
+    // two half-step kicks (16 B); a listed pair its (i, j) (8 B), shape (5 doubles) and result (9 doubles).
+    const Material m;
+    Particles p;
+    for (int x = 0; x < 10; ++x)
+        for (int y = 0; y < 10; ++y) p.add(Vec3(x * 1.98e-3, y * 1.98e-3, 0), 1e-3, 2500);
+    const Simulation sim(p, ContactLaw<NormalHertz, TangentialMindlin, CohesionNone, RollingEpsd>(m), {}, Vec3::Zero(), 1e-7, 0.3e-3);
+    const std::size_t pairs = sim.neighbors().pairs().size();
+    REQUIRE(pairs >= 180);  // the square lattice's 2 × 10 × 9 touching pairs, at least
+    std::map<std::string, std::size_t> by;
+    for (const auto& item : sim.memory()) by[item.name] = item.bytes;
+    auto named = [&](const std::string& start) {
+        const auto it = std::find_if(by.begin(), by.end(), [&](const auto& kv) { return kv.first.rfind(start, 0) == 0; });
+        REQUIRE(it != by.end());
+        return it->second;
+    };
+    CHECK(named("spheres") >= 100 * (149 + 16));
+    CHECK(named("pair list") >= pairs * 8);
+    CHECK(named("pair shapes") >= pairs * 40);
+    CHECK(named("pair results") >= pairs * 72);
+    CHECK(named("neighbour list") >= pairs * 8 + 100 * 24);
 }
