@@ -78,6 +78,16 @@ std::function<void(const slump::SlumpProgress&)> slump_progress(io::VtkSeries* s
     };
 }
 
+// Each size bin's share of the pile's mass, and the distribution's (slump/size_distribution.hpp).
+nlohmann::ordered_json size_bins(const slump::SlumpScene& scene, const dem::Particles& pile) {
+    const auto shares = slump::bin_mass_shares(scene.sizes);
+    std::vector<double> mass(shares.size(), 0.0);
+    for (std::size_t i = 0; i < pile.size(); ++i) mass[slump::size_bin(scene.sizes, pile.radius[i] / scene.radius_m)] += pile.mass[i];
+    const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
+    for (auto& m : mass) m /= total;
+    return {{"distribution_mass_fractions", shares}, {"pile_mass_fractions", mass}};
+}
+
 // The laws the scene chose, by their parts' choice values (dem/law_parts.hpp), and its bridge curves.
 void add_laws(nlohmann::ordered_json& j, const slump::SlumpScene& scene) {
     j["contact_laws"] = nlohmann::ordered_json::array();
@@ -142,15 +152,7 @@ int run_slump_command(const Options& o) {
     j["thread_windows"] = {{"all_threads", r.windows_all_threads}, {"one_thread", r.windows_one_thread}};
     j["fill"] = scene.fill == slump::FillKind::poured ? "poured" : "lattice";
     j["particle_sizes"] = slump::describe(scene.sizes);
-    if (!scene.sizes.monodisperse()) {  // each size bin's share of the pile's mass, and the distribution's
-        const auto shares = slump::bin_mass_shares(scene.sizes);
-        std::vector<double> mass(shares.size(), 0.0);
-        for (std::size_t i = 0; i < r.final_state.size(); ++i)
-            mass[slump::size_bin(scene.sizes, r.final_state.radius[i] / scene.radius_m)] += r.final_state.mass[i];
-        const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
-        for (auto& m : mass) m /= total;
-        j["size_bins"] = {{"distribution_mass_fractions", shares}, {"pile_mass_fractions", mass}};
-    }
+    if (!scene.sizes.monodisperse()) j["size_bins"] = size_bins(scene, r.final_state);
     add_laws(j, scene);
     j["pour_time_s"] = r.pour_time;
     j["fill_mass_g"] = r.fill.mass * 1e3;

@@ -106,6 +106,7 @@ void read_sizes(const io::TomlReader& r, SlumpScene& s) {
         std::size_t median = 0;
         while (below + (*fractions)[median] / sum < 0.5) below += (*fractions)[median++] / sum;
         s.radius_m = (*radii)[median] * mm;
+        if (radii->size() == 1) return;  // one class: one radius, stored as such
         for (std::size_t c = 0; c < radii->size(); ++c) {
             s.sizes.class_ratios.push_back((*radii)[c] / (*radii)[median]);
             s.sizes.mass_fractions.push_back((*fractions)[c] / sum);
