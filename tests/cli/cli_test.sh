@@ -349,14 +349,17 @@ case $case_name in
     printf '[particles]\nradius_mm = -1\n' >"$work/bad.toml"
     expect 2 'bad.toml:2: particles.radius_mm = -1' -- "$demscale" slump --scene "$work/bad.toml" --out "$work/s"
     [ ! -e "$work/s" ] || fail "a failed run created output"
-    # A wet run from a start state of unequal spheres is refused, not bridged with one radius.
+    # A wet run from a start state of unequal spheres bridges each pair with its own radius, on an
+    # engine line of its own; with a rolling law that line lacks (epsd2) it is refused, naming it.
     printf '# demscale particle state (SI)\nx,y,z,vx,vy,vz,wx,wy,wz,radius,density\n0,0,0.0022,0,0,0,0,0,0,0.0022,2200\n0.006,0,0.003,0,0,0,0,0,0,0.003,2200\n' \
       >"$work/mixed.csv"
-    expect 2 '--start = radii from 2.2 to 3 mm: accepted spheres of one radius for a wet scene' -- \
-      "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --start "$work/mixed.csv" --out "$work/s"
+    expect 0 'wrote .*slump_particles.csv' -- \
+      "$demscale" slump --scene "$src/data/scenes/small_wet.toml" --start "$work/mixed.csv" --no-png --out "$work/mixed"
+    { cat "$src/data/scenes/small_wet.toml"; printf '[contact]\nrolling_model = "epsd2"\nrolling_damping = 0\n'; } >"$work/epsd2.toml"
+    expect 2 'the contact laws Hertz normal contact, liquid bridge of each pair.s radius, epsd2 rolling: accepted one of the compiled engines' -- \
+      "$demscale" slump --scene "$work/epsd2.toml" --start "$work/mixed.csv" --out "$work/s"
     [ ! -e "$work/s" ] || fail "a refused run created output"
     # The ledger with a rolling law the engine list compiles none for: refused naming the list.
-    { cat "$src/data/scenes/small_wet.toml"; printf '[contact]\nrolling_model = "epsd2"\nrolling_damping = 0\n'; } >"$work/epsd2.toml"
     expect 2 'the contact laws Hertz normal contact, liquid bridge, epsd2 rolling, energy ledger: accepted one of the compiled engines \(lib/slump/compiled_engines.hpp\): Hertz normal contact, no cohesion, epsd rolling;' -- \
       "$demscale" slump --scene "$work/epsd2.toml" --energy --out "$work/s"
     [ ! -e "$work/s" ] || fail "a refused run created output" ;;
