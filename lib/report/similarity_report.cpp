@@ -362,7 +362,7 @@ Section inputs_section(const ReportOptions& o, const slump::SlumpScene& scene, c
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     inputs.blocks.push_back(BulletList{{"demscale " + std::string(version) + (o.git_revision.empty() ? "" : ", git " + o.git_revision),
-                                        "generated " + std::string(date) + (o.quick ? " (--quick: small scene, coarse grids)" : ""),
+                                        "generated " + std::string(date) + (o.quick ? " (--quick: coarse grids, fewer seeds and scale factors)" : ""),
                                         "scale factors S_f: " + number_list(o.scale_factors),
                                         "candidate exponents k (gamma = gamma0 S_f^k): " + number_list(plan.exponents),
                                         "seeds per ensemble: " + std::to_string(plan.seeds),
