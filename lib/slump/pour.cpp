@@ -114,10 +114,10 @@ dem::Particles cut_to_mass(const SlumpScene& s, const dem::Particles& pile) {
     by_height(inside), by_height(at_wall);
     const double target = fill_mass(s);
     // Each size bin to its share of the mass, the lowest spheres first. Those resting on the wall
-    // are left out, as they always were (docs/limitations.md), unless a bin falls short without
-    // them: the wall holds a share of the mass that grows with R (a layer one sphere thick), so a
-    // size distribution's large spheres would be too few. Then, should the mass still fall short,
-    // the lowest of the rest up to the total.
+    // are left out, as they always were for one radius (docs/limitations.md); a size distribution's
+    // bin that falls short without them takes them: the wall holds a share of the mass that grows
+    // with R (a layer one sphere thick), so its large spheres would be too few. Then, should the
+    // mass still fall short, the lowest of the rest up to the total.
     const auto shares = bin_mass_shares(s.sizes);
     std::vector<double> bin_mass(shares.size(), 0.0);
     std::vector<bool> taken(pile.size(), false);
@@ -132,7 +132,7 @@ dem::Particles cut_to_mass(const SlumpScene& s, const dem::Particles& pile) {
         }
     };
     take_lowest(inside, true);
-    take_lowest(at_wall, true);
+    if (!s.sizes.monodisperse()) take_lowest(at_wall, true);
     take_lowest(inside, false);
     std::vector<std::size_t> all = inside;
     all.insert(all.end(), at_wall.begin(), at_wall.end());
