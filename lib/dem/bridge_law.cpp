@@ -54,14 +54,11 @@ double bridge_vhat(const ContactSettings& s, double radius_m) {
     return bridge::liquid_bridge_volume(s.liquid.moisture_content, mass, s.liquid.density_kg_per_m3) / std::pow(radius_m, 3);
 }
 
-template <>
-CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where) {
-    return build_liquid_bridge<BridgeRadius::common>(s, sizes.radius_m, sizes.largest_radius_m, bridge_vhat(s, sizes.radius_m), where);
+template <BridgeRadius Radius>
+LiquidBridge<Radius> LiquidBridge<Radius>::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where) {
+    return build_liquid_bridge<Radius>(s, sizes.radius_m, sizes.largest_radius_m, bridge_vhat(s, sizes.radius_m), where);
 }
-
-template <>
-CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where) {
-    return build_liquid_bridge<BridgeRadius::per_pair>(s, sizes.radius_m, sizes.largest_radius_m, bridge_vhat(s, sizes.radius_m), where);
-}
+template CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings&, const LawSizes&, const std::string&);
+template CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings&, const LawSizes&, const std::string&);
 
 }  // namespace demscale::dem

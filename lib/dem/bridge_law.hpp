@@ -32,10 +32,9 @@ LiquidBridge<Radius> build_liquid_bridge(const ContactSettings& s, double radius
 // from the moisture content and the particle's mass.
 double bridge_vhat(const ContactSettings& s, double radius_m);
 
-// The law's builder (dem/law_builder.hpp): build_liquid_bridge with these sizes and V̂ of Eq. 5.
-template <>
-CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where);
-template <>
-CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings& s, const LawSizes& sizes, const std::string& where);
+// The law's builder (dem/law_builder.hpp), LiquidBridge::build: build_liquid_bridge with these
+// sizes and V̂ of Eq. 5, for both forms (instantiated in dem/bridge_law.cpp).
+extern template CohesionLiquidBridge CohesionLiquidBridge::build(const ContactSettings&, const LawSizes&, const std::string&);
+extern template CohesionLiquidBridgePerPair CohesionLiquidBridgePerPair::build(const ContactSettings&, const LawSizes&, const std::string&);
 
 }  // namespace demscale::dem

@@ -8,6 +8,8 @@
 #include <tuple>
 #include <vector>
 
+#include "core/memory_use.hpp"
+
 namespace demscale::dem {
 
 using Vec3 = Eigen::Vector3d;
@@ -38,6 +40,12 @@ struct Particles {
     std::vector<std::uint8_t> fixed;     // 1: held in place (a rough floor's grain), never moves
 
     std::size_t size() const { return radius.size(); }
+    // What the arrays hold (their capacities), bytes.
+    std::size_t bytes() const {
+        return capacity_bytes(position) + capacity_bytes(velocity) + capacity_bytes(angular_velocity) + capacity_bytes(force) +
+               capacity_bytes(torque) + capacity_bytes(radius) + capacity_bytes(mass) + capacity_bytes(inertia) + capacity_bytes(species) +
+               capacity_bytes(fixed);
+    }
     std::size_t mobile_count() const;
 
     // A solid sphere of density rho (kg/m³). Returns its index.

@@ -176,10 +176,7 @@ public:
     // The engine's memory by consumer (its containers' capacities), bytes: the benchmark's breakdown.
     std::vector<MemoryItem> memory() const {
         std::vector<MemoryItem> out = {
-            {"spheres (position, velocity, spin, force, torque, radius, mass, ...)",
-             capacity_bytes(p_.position) + capacity_bytes(p_.velocity) + capacity_bytes(p_.angular_velocity) + capacity_bytes(p_.force) +
-                 capacity_bytes(p_.torque) + capacity_bytes(p_.radius) + capacity_bytes(p_.mass) + capacity_bytes(p_.inertia) +
-                 capacity_bytes(p_.species) + capacity_bytes(p_.fixed) + capacity_bytes(kick_)},
+            {"spheres (position, velocity, spin, force, torque, radius, mass, ...)", p_.bytes() + capacity_bytes(kick_)},
             {"neighbour list", neighbors_.bytes()},
         };
         pair_contacts_.add_memory(out);

@@ -91,8 +91,9 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
     const double r = sc.radius_m, vhat = bridge_vhat(sc), theta = sc.liquid.contact_angle.radians();
     // Liquid per particle: each sphere gives (1 − √(1 − R_j²/(R_i + R_j)²))/2 of its liquid to a
     // bridge (0.0670 for equal spheres), so the bridge holds V when each sphere carries V/0.1340.
-    const double share = 1 - std::sqrt(0.75), particle_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
-    const double content = vhat * r * r * r / (share * particle_volume);
+    auto given = [](double ri, double rj) { return (1 - std::sqrt(1 - rj * rj / ((ri + rj) * (ri + rj)))) / 2; };
+    auto sphere_volume = [](double x) { return 4.0 / 3.0 * std::numbers::pi * x * x * x; };
+    const double content = vhat * r * r * r / (2 * given(r, r) * sphere_volume(r));
     // LIGGGHTS takes θ_eff = θ_i·θ_j/2 (radians) for the pair; writing √(2θ) makes θ_eff the scene's θ.
     const double theta_written_deg = std::sqrt(2 * theta) * 180 / std::numbers::pi;
     // Its rupture is Lian's (1 + θ/2)·V^(1/3); the neighbour list must reach that far.
@@ -142,10 +143,8 @@ WetDeck wet_deck(const slump::SlumpScene& sc) {
         // sphere's own liquid; demscale takes R* = 2 Ri Rj / (Ri + Rj) and V = V^ R*^3. Both at the
         // scene's smallest and largest spheres:
         const double r1 = smallest_radius(sc), r2 = largest_radius(sc), r_star = 2 * r1 * r2 / (r1 + r2);
-        auto given = [&](double ri, double rj) {  // the liquid sphere i gives the bridge with j
-            return content * 4.0 / 3.0 * std::numbers::pi * ri * ri * ri * (1 - std::sqrt(1 - rj * rj / ((ri + rj) * (ri + rj)))) / 2;
-        };
-        const double v_liggghts = given(r1, r2) + given(r2, r1), v_demscale = vhat * r_star * r_star * r_star;
+        const double v_liggghts = content * (sphere_volume(r1) * given(r1, r2) + sphere_volume(r2) * given(r2, r1));
+        const double v_demscale = vhat * r_star * r_star * r_star;
         w.notes.push_back("unequal spheres (" + describe(sc.sizes) + "): between the smallest and largest, " + format_short(r1 * 1e3, 3) +
                           " and " + format_short(r2 * 1e3, 3) + " mm, LIGGGHTS' force scale pi gamma sqrt(Ri Rj) is " +
                           pct(std::sqrt(r1 * r2) / r_star - 1) + " against demscale's pi gamma R*, R* = 2 Ri Rj / (Ri + Rj); its bridge "

@@ -22,13 +22,12 @@ NumberCut number_cut(const SizeDistribution& d) {
     return {gsl_cdf_ugaussian_Pinv(d.lower_quantile) + 3 * s, gsl_cdf_ugaussian_Pinv(d.upper_quantile) + 3 * s};
 }
 
-// Each class's share of the spheres: f_c / x_c³, normalised.
-std::vector<double> number_weights(const SizeDistribution& d) {
-    std::vector<double> w;
-    double total = 0;
-    for (std::size_t c = 0; c < d.class_ratios.size(); ++c) total += d.mass_fractions[c] / std::pow(d.class_ratios[c], 3);
-    for (std::size_t c = 0; c < d.class_ratios.size(); ++c) w.push_back(d.mass_fractions[c] / std::pow(d.class_ratios[c], 3) / total);
-    return w;
+// Σ f_c / x_c³: a class's share of the spheres is its f_c / x_c³ over this, and the mean (r/R)³
+// its inverse.
+double inverse_mean_volume(const SizeDistribution& d) {
+    double sum = 0;
+    for (std::size_t c = 0; c < d.class_ratios.size(); ++c) sum += d.mass_fractions[c] / std::pow(d.class_ratios[c], 3);
+    return sum;
 }
 
 }  // namespace
@@ -46,12 +45,12 @@ double SizeDistribution::largest_ratio() const {
 double draw_radius_ratio(const SizeDistribution& d, std::mt19937_64& rng) {
     if (d.monodisperse()) return 1.0;
     std::uniform_real_distribution<double> unit(0, 1);
-    if (d.sieve()) {
-        const auto w = number_weights(d);
-        double u = unit(rng);
-        for (std::size_t c = 0; c + 1 < w.size(); ++c) {
-            if (u < w[c]) return d.class_ratios[c];
-            u -= w[c];
+    if (d.sieve()) {  // a class by its share of the spheres
+        double u = unit(rng) * inverse_mean_volume(d);
+        for (std::size_t c = 0; c + 1 < d.class_ratios.size(); ++c) {
+            const double w = d.mass_fractions[c] / std::pow(d.class_ratios[c], 3);
+            if (u < w) return d.class_ratios[c];
+            u -= w;
         }
         return d.class_ratios.back();
     }
@@ -63,11 +62,7 @@ double draw_radius_ratio(const SizeDistribution& d, std::mt19937_64& rng) {
 
 double mean_volume_ratio(const SizeDistribution& d) {
     if (d.monodisperse()) return 1.0;
-    if (d.sieve()) {
-        double inverse = 0;  // Σ f_c / x_c³ = 1 / mean x³
-        for (std::size_t c = 0; c < d.class_ratios.size(); ++c) inverse += d.mass_fractions[c] / std::pow(d.class_ratios[c], 3);
-        return 1 / inverse;
-    }
+    if (d.sieve()) return 1 / inverse_mean_volume(d);
     // E[x³] of the cut number lognormal: exp(−9s²/2) (Φ(β − 3s) − Φ(α − 3s)) / (Φ(β) − Φ(α)), and
     // β − 3s, α − 3s are the mass quantiles' own z.
     const auto [alpha, beta] = number_cut(d);

@@ -12,6 +12,7 @@
 #include "slump/motion.hpp"
 #include "slump/pour.hpp"
 #include "slump/slump_run.hpp"
+#include "sampling_error.hpp"
 
 using namespace demscale;
 using namespace demscale::slump;
@@ -183,19 +184,12 @@ TEST_CASE("Poured wet fill of a sieve table: each class's share of the mass, the
     // The fill's mass is the scene's, within half of the largest sphere.
     CHECK(total == Approx(fill_mass(s)).margin(0.5 * s.material.density * 4.0 / 3.0 * M_PI * std::pow(1.4 * s.radius_m, 3)));
     // Each class within 4 standard errors of a draw of this many spheres (the delta method, as
-    // size_distribution_test.cpp), and within one of its spheres of its share of the fill's mass:
+    // sampling_error.hpp), and within one of its spheres of its share of the fill's mass:
     // the cut keeps each class's share (a single cut level kept 0.16-0.21 of the mass in the largest
     // class instead of 0.25, in 5 seeds: large spheres settle high and against the wall).
     const double n = static_cast<double>(p.size());
-    std::vector<double> w;
-    double wsum = 0, mu = 0;
-    for (std::size_t j = 0; j < 3; ++j) w.push_back(s.sizes.mass_fractions[j] / std::pow(s.sizes.class_ratios[j], 3)), wsum += w[j];
-    for (std::size_t j = 0; j < 3; ++j) w[j] /= wsum, mu += w[j] * std::pow(s.sizes.class_ratios[j], 3);
     for (std::size_t c = 0; c < 3; ++c) {
-        double var = 0;
-        for (std::size_t j = 0; j < 3; ++j)
-            var += w[j] * std::pow(s.sizes.class_ratios[j], 6) * std::pow((j == c ? 1.0 : 0.0) - s.sizes.mass_fractions[c], 2);
-        const double error = std::sqrt(var / n) / mu;
+        const double error = class_mass_fraction_error(s.sizes.class_ratios, s.sizes.mass_fractions, c, n);
         INFO("class " << c << ": " << mass[c] / total << " of the mass, +- " << error << " (" << n << " spheres)");
         CHECK(std::abs(mass[c] / total - s.sizes.mass_fractions[c]) < 4 * error);
         CHECK(std::abs(mass[c] - s.sizes.mass_fractions[c] * fill_mass(s)) <=

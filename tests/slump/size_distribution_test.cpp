@@ -1,6 +1,6 @@
 // Size distributions: the spheres drawn by number carry the mass fractions of a sieve table and the
-// mass distribution of a cut lognormal, within sampling error (by the delta method, written out
-// here); the cut's radii and the mean volume against GSL's lognormal and a Monte Carlo mean; one
+// mass distribution of a cut lognormal, within sampling error (by the delta method,
+// sampling_error.hpp); the cut's radii and the mean volume against GSL's lognormal and a Monte Carlo mean; one
 // radius draws nothing; scenes read the keys and refuse bad ones naming them.
 #include <catch2/catch.hpp>
 #include <gsl/gsl_cdf.h>
@@ -14,23 +14,12 @@
 
 #include "core/input_error.hpp"
 #include "slump/slump_scene.hpp"
+#include "sampling_error.hpp"
 
 using namespace demscale;
 using namespace demscale::slump;
 
 namespace {
-
-// The standard error of a class's mass fraction among n spheres drawn by number with weights w_j
-// and radii x_j: f_c = n_c x_c³ / Σ n_j x_j³, linearised, has variance
-// Σ_j w_j x_j⁶ (δ_jc − f_c)² / (n μ²) with μ = Σ_j w_j x_j³.
-double fraction_error(const std::vector<double>& x, const std::vector<double>& f, std::size_t c, double n) {
-    std::vector<double> w;
-    double total = 0, mu = 0, var = 0;
-    for (std::size_t j = 0; j < x.size(); ++j) w.push_back(f[j] / std::pow(x[j], 3)), total += w.back();
-    for (std::size_t j = 0; j < x.size(); ++j) w[j] /= total, mu += w[j] * std::pow(x[j], 3);
-    for (std::size_t j = 0; j < x.size(); ++j) var += w[j] * std::pow(x[j], 6) * std::pow((j == c ? 1.0 : 0.0) - f[c], 2);
-    return std::sqrt(var / n) / mu;
-}
 
 SlumpScene scene_from(const std::string& particles) {
     const auto path = std::filesystem::temp_directory_path() / "demscale_size_distribution_test.toml";
@@ -56,7 +45,7 @@ TEST_CASE("A sieve table drawn by number gives each class its mass fraction with
     }
     for (std::size_t c = 0; c < 3; ++c) {
         INFO("class " << c);
-        CHECK(std::abs(mass[c] / total - d.mass_fractions[c]) < 4 * fraction_error(d.class_ratios, d.mass_fractions, c, n));
+        CHECK(std::abs(mass[c] / total - d.mass_fractions[c]) < 4 * class_mass_fraction_error(d.class_ratios, d.mass_fractions, c, n));
     }
     // The mean volume: 1 / Σ f_c / x_c³ by hand, and the sample's mean.
     const double by_hand = 1 / (0.25 / 0.343 + 0.5 + 0.25 / 2.744);
@@ -89,7 +78,7 @@ TEST_CASE("A cut lognormal drawn by number follows the mass distribution GSL's l
         const double r = gsl_cdf_lognormal_Pinv(q, 0, s), expected = (gsl_cdf_lognormal_P(r, 0, s) - 0.05) / 0.9;
         double below = 0, spread = 0;
         for (double xi : x) below += xi <= r ? std::pow(xi, 3) : 0.0;
-        // Its standard error by the delta method, as fraction_error with the sample for the weights.
+        // Its standard error by the delta method, as class_mass_fraction_error with the sample for the weights.
         for (double xi : x) spread += std::pow(std::pow(xi, 3) * ((xi <= r ? 1.0 : 0.0) - expected), 2);
         const double error = std::sqrt(spread / n / n) / (total / n);
         INFO("mass quantile " << q << ": " << below / total << " against " << expected << " +- " << error);
